@@ -1,0 +1,58 @@
+"""A design config: the items of one leg configuration, the capsule, the audit rule and the display units."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+from .config import load_toml
+from .items import Item, read_item
+from .materials import library
+
+UNIT_SYSTEMS = ("US", "SI")
+
+
+@dataclass(frozen=True)
+class DesignConfig:
+    path: Path
+    configuration: str
+    title: str
+    capsule_mass: float | None
+    legs: int
+    units: str
+    required: float
+    decimals: int | None
+    items: tuple[Item, ...]
+
+
+def read_design(path: str | Path) -> DesignConfig:
+    """Read and validate a design config; any problem is an InputError naming file and key path."""
+    path = Path(path)
+    root = load_toml(path)
+    d = root.table("design")
+    configuration = d.string("configuration")
+    title = d.string("title", configuration)
+    capsule = d.quantity("capsule_mass", "mass", default=None)
+    legs = d.integer("legs", 4)
+    extra = [path.parent / p for p in d.strings("materials", [])]
+    d.finish()
+    rep = root.table("report", optional=True)
+    units = rep.string("units", "US", choices=UNIT_SYSTEMS) if rep else "US"
+    if rep:
+        rep.finish()
+    aud = root.table("audit", optional=True)
+    required = aud.number("required_design_factor", 1.2) if aud else 1.2
+    decimals = aud.integer("decimals", None, minimum=0) if aud else None
+    if aud:
+        aud.finish()
+    for p in extra:
+        if not p.exists():
+            raise d.error("materials", "paths of existing material files or folders", str(p))
+    mats = library(extra)
+    items = tuple(read_item(n, mats, required) for n in root.tables("item"))
+    names = [i.name for i in items]
+    dup = next((n for n in names if names.count(n) > 1), None)
+    if dup:
+        raise root.error("item", "item names unique within a configuration", f"{dup!r} twice")
+    root.finish()
+    return DesignConfig(path, configuration, title, capsule, legs, units, required, decimals, items)

@@ -1,0 +1,143 @@
+"""Quantities with units: parsed once at the input boundary into SI floats, formatted for display."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import pint
+
+
+@lru_cache(maxsize=1)
+def registry() -> pint.UnitRegistry:
+    """The shared pint registry (lb is pound mass, lbf pound force, g_0 standard gravity)."""
+    return pint.UnitRegistry()
+
+
+@dataclass(frozen=True)
+class Dim:
+    """A physical dimension as exponents of mass, length and time."""
+
+    name: str
+    mass: int
+    length: int
+    time: int
+
+
+DIMS = {d.name: d for d in (
+    Dim("dimensionless", 0, 0, 0),
+    Dim("length", 0, 1, 0),
+    Dim("area", 0, 2, 0),
+    Dim("second_moment", 0, 4, 0),
+    Dim("mass", 1, 0, 0),
+    Dim("force", 1, 1, -2),
+    Dim("moment", 1, 2, -2),
+    Dim("stress", 1, -1, -2),
+    Dim("density", 1, -3, 0),
+    Dim("velocity", 0, 1, -1),
+    Dim("acceleration", 0, 1, -2),
+    Dim("time", 0, 0, 1),
+    Dim("inertia", 1, 2, 0),
+    Dim("energy", 1, 2, -2),
+    Dim("spring_rate", 1, 0, -2),
+    Dim("angular_velocity", 0, 0, -1),
+)}
+
+# What a user most likely meant when the dimension is wrong.
+_HINTS = {("force", "mass"): " (write lbf for pound-force; lb is pound-mass)",
+          ("moment", "[mass] * [length]"): " (write lbf*in for a moment)"}
+
+
+def dimension_of(q: pint.Quantity) -> tuple[int, int, int]:
+    d = q.dimensionality
+    return (int(d.get("[mass]", 0)), int(d.get("[length]", 0)), int(d.get("[time]", 0)))
+
+
+def parse(text: str | float | int, dim: str) -> float:
+    """Parse "3750 lbf" into SI for dimension `dim`; raise ValueError with a readable reason.
+
+    Angles are given as "15 deg" or "0.26 rad" and returned in radians (dimension "angle").
+    """
+    ureg = registry()
+    if isinstance(text, bool):
+        raise ValueError(f"a quantity in {example(dim)}")
+    if isinstance(text, (int, float)):
+        if dim == "dimensionless":
+            return float(text)
+        raise ValueError(f"a number with a unit of {dim}, e.g. \"{example(dim)}\"")
+    try:
+        q = ureg.Quantity(str(text).strip())
+    except Exception as exc:  # pint raises many kinds on garbage
+        raise ValueError(f"a quantity like \"{example(dim)}\" (could not read it: {exc})") from None
+    if not isinstance(q, pint.Quantity):
+        q = ureg.Quantity(q)
+    if dim == "angle":
+        if q.dimensionless:
+            return float(q.to("rad").magnitude)
+        raise ValueError(f"an angle like \"{example(dim)}\"")
+    want = DIMS[dim]
+    if dimension_of(q) != (want.mass, want.length, want.time):
+        found = str(q.dimensionality)
+        hint = _HINTS.get((dim, "mass" if found == "[mass]" else found), "")
+        raise ValueError(f"a {dim} like \"{example(dim)}\"{hint}")
+    value = float(q.to_base_units().magnitude)
+    if value != value or value in (float("inf"), float("-inf")):
+        raise ValueError("a finite quantity")
+    return value
+
+
+def example(dim: str) -> str:
+    return {"length": "0.050 in", "area": "0.463 in^2", "second_moment": "0.478 in^4",
+            "mass": "3000 lb", "force": "3750 lbf", "moment": "16150 lbf*in",
+            "stress": "69000 psi", "density": "0.100 lb/in^3", "velocity": "35 ft/s",
+            "acceleration": "20 g_0", "time": "0.5 s", "inertia": "3.326 slug*ft^2",
+            "energy": "68000 ft*lbf", "spring_rate": "500 lbf/in", "angle": "15 deg",
+            "angular_velocity": "3 rad/s", "dimensionless": "1.2"}[dim]
+
+
+# Display units per dimension for the two unit systems a report may ask for.
+DISPLAY = {
+    "US": {"length": "in", "area": "in^2", "second_moment": "in^4", "mass": "lb", "force": "lbf",
+           "moment": "lbf*in", "stress": "psi", "density": "lb/in^3", "velocity": "ft/s",
+           "acceleration": "g_0", "time": "s", "inertia": "slug*ft^2", "energy": "ft*lbf",
+           "spring_rate": "lbf/in", "angular_velocity": "rad/s", "dimensionless": ""},
+    "SI": {"length": "mm", "area": "mm^2", "second_moment": "mm^4", "mass": "kg", "force": "N",
+           "moment": "N*m", "stress": "MPa", "density": "kg/m^3", "velocity": "m/s",
+           "acceleration": "m/s^2", "time": "s", "inertia": "kg*m^2", "energy": "J",
+           "spring_rate": "N/mm", "angular_velocity": "rad/s", "dimensionless": ""},
+}
+
+_LABEL = {"in^2": "in²", "in^4": "in⁴", "mm^2": "mm²", "mm^4": "mm⁴", "lbf*in": "lbf·in",
+          "N*m": "N·m", "lb/in^3": "lb/in³", "kg/m^3": "kg/m³", "slug*ft^2": "slug·ft²",
+          "kg*m^2": "kg·m²", "ft*lbf": "ft·lbf", "g_0": "g", "m/s^2": "m/s²"}
+
+
+@lru_cache(maxsize=None)
+def _si_per_display(system: str, dim: str) -> float:
+    unit = DISPLAY[system][dim]
+    if not unit:
+        return 1.0
+    return float(registry().Quantity(1.0, unit).to_base_units().magnitude)
+
+
+def to_display(value_si: float, dim: str, system: str) -> float:
+    """Convert an SI float to the display unit of `dim` in `system` ("US" or "SI")."""
+    return value_si / _si_per_display(system, dim)
+
+
+def unit_label(dim: str, system: str) -> str:
+    unit = DISPLAY[system][dim]
+    return _LABEL.get(unit, unit)
+
+
+def fmt(value_si: float, dim: str, system: str, digits: int = 4) -> str:
+    """Format an SI value in display units with `digits` significant figures and thousands separators."""
+    v = to_display(value_si, dim, system)
+    if v == 0 or not (abs(v) < float("inf")):
+        text = "0" if v == 0 else "∞"
+    else:
+        from math import floor, log10
+        decimals = max(0, digits - 1 - int(floor(log10(abs(v)))))
+        text = f"{v:,.{decimals}f}"
+    label = unit_label(dim, system)
+    return f"{text} {label}".strip()
