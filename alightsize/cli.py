@@ -1,0 +1,94 @@
+"""Command line: `alightsize design | audit | scale` (see CONTRACTS.md). Exit 0 ok, 1 check failed,
+2 bad input, 3 internal error."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import traceback
+from pathlib import Path
+
+from . import __version__
+from .errors import InputError
+
+
+def _design(args) -> int:
+    from .design import run_design, write_design
+    from .design_config import read_design
+    res = run_design(read_design(args.config))
+    files = write_design(res, Path(args.out))
+    failed = [r for r in res.records if not r.ok]
+    print(f"{res.config.configuration}: {len(res.records)} checks, {len(failed)} below the required design factor; "
+          f"wrote {', '.join(str(f) for f in files)}")
+    return 0 if res.ok else 1
+
+
+def _audit(args) -> int:
+    from .atomic import write_atomic
+    from .audit import audit_json, audit_table, junit_xml
+    from .design import run_design
+    from .design_config import read_design
+    res = run_design(read_design(args.config))
+    print(audit_table(res.records))
+    print("OK" if res.ok else "FAILED: " + ", ".join(f"{r.item.name} / {r.item.checks[r.index].kind}"
+                                                 for r in res.records if not r.ok))
+    if args.json:
+        write_atomic(args.json, json.dumps(audit_json(res.config, res.records), indent=2) + "\n")
+    if args.junit:
+        write_atomic(args.junit, junit_xml(res.config, res.records))
+    return 0 if res.ok else 1
+
+
+def _scale(args) -> int:
+    from .atomic import write_atomic
+    from .scaling import table27
+    if not (args.length > 0 and args.mass > 0):
+        raise InputError("(command line)", "--length/--mass", "positive scale factors",
+                         f"length {args.length}, mass {args.mass}")
+    factors = table27(args.length, args.mass)
+    width = max(map(len, factors))
+    print(f"Model-to-full-scale factors (acceleration scale 1), length {args.length:g}, mass {args.mass:g}")
+    for k, v in factors.items():
+        print(f"  {k.replace('_', ' '):<{width}}  {v:.4g}")
+    if args.json:
+        doc = {"schema": "alightsize.scale/1", "length": args.length, "mass": args.mass, "factors": factors}
+        write_atomic(args.json, json.dumps(doc, indent=2) + "\n")
+    return 0
+
+
+def parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(prog="alightsize", description=__doc__.split("(")[0].strip())
+    p.add_argument("--version", action="version", version=f"alightsize {__version__}")
+    sub = p.add_subparsers(dest="command", required=True)
+    d = sub.add_parser("design", help="stress checks, sizing, weights and reports for a design config")
+    d.add_argument("config")
+    d.add_argument("--out", required=True, help="output folder")
+    d.set_defaults(run=_design)
+    a = sub.add_parser("audit", help="design-factor audit only (for CI)")
+    a.add_argument("config")
+    a.add_argument("--json", help="write the audit as JSON (alightsize.audit/1)")
+    a.add_argument("--junit", help="write a JUnit XML report")
+    a.set_defaults(run=_audit)
+    s = sub.add_parser("scale", help="test-model scaling factors (Table 27)")
+    s.add_argument("--length", type=float, required=True, help="length scale, full / model")
+    s.add_argument("--mass", type=float, required=True, help="mass scale, full / model")
+    s.add_argument("--json", help="write the factors as JSON (alightsize.scale/1)")
+    s.set_defaults(run=_scale)
+    return p
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = parser().parse_args(argv)
+    try:
+        return args.run(args)
+    except InputError as exc:
+        print(f"alightsize: error: {exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print("alightsize: interrupted", file=sys.stderr)
+        return 130
+    except Exception:  # noqa: BLE001 - last resort: exit 3 with the trace for a bug report
+        traceback.print_exc()
+        print("alightsize: internal error (exit 3); please report it with the input", file=sys.stderr)
+        return 3

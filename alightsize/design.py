@@ -1,0 +1,96 @@
+"""`alightsize design`: stress checks and sizing -> weights -> summary and reports for one config."""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from math import isfinite
+from pathlib import Path
+
+from .atomic import write_atomic
+from .audit import CheckRecord, audit_json, run_audit
+from .design_config import DesignConfig
+from .items import Item
+from .sizing import Sizing, size_item
+
+SCHEMA = "alightsize.design/1"
+
+
+@dataclass(frozen=True)
+class WeightRow:
+    label: str
+    item: Item
+    count: int
+    each: float          # kg
+    steps: tuple
+
+
+@dataclass(frozen=True)
+class DesignResult:
+    config: DesignConfig
+    items: tuple[Item, ...]        # as designed: sized items carry their sized section
+    records: list[CheckRecord]
+    sizings: list[Sizing]
+    weights: list[WeightRow]
+
+    @property
+    def ok(self) -> bool:
+        return all(r.ok for r in self.records) and all(s.feasible for s in self.sizings)
+
+    @property
+    def per_leg(self) -> float:
+        return sum(w.count * w.each for w in self.weights)
+
+
+def run_design(cfg: DesignConfig) -> DesignResult:
+    sizings, items = [], []
+    for item in cfg.items:
+        if item.size is not None:
+            s = size_item(item)
+            sizings.append(s)
+            item = item.with_section(item.section.with_dim(s.dimension, s.sized))
+        items.append(item)
+    items = tuple(items)
+    records = run_audit(cfg, items)
+    weights = []
+    for item in items:
+        w = item.weight_each()
+        if w is not None:
+            weights.append(WeightRow(item.weight.label or item.name, item, item.count, w[0], tuple(w[1])))
+    return DesignResult(cfg, items, records, sizings, weights)
+
+
+def weights_json(res: DesignResult) -> dict:
+    cfg = res.config
+    total = res.per_leg * cfg.legs
+    return {cfg.configuration: {
+        "items": [{"item": w.label, "count_per_leg": w.count, "weight_each_kg": w.each} for w in res.weights],
+        "per_leg_kg": res.per_leg, "legs": cfg.legs, "total_kg": total, "capsule_kg": cfg.capsule_mass,
+        "fraction_of_capsule": total / cfg.capsule_mass if cfg.capsule_mass else None}}
+
+
+def summary_json(res: DesignResult) -> dict:
+    out = {"schema": SCHEMA, "ok": res.ok, "configuration": res.config.configuration,
+           "audit": {k: v for k, v in audit_json(res.config, res.records).items() if k != "schema"},
+           "weights": weights_json(res)}
+    if res.sizings:
+        out["sizing"] = [{"item": s.item, "dimension": s.dimension, "printed_m": s.printed, "sized_m": s.sized,
+                          "design_factor_printed": _finite(s.factor_printed), "design_factor_sized": _finite(s.factor_sized),
+                          "weight_printed_kg": s.weight_printed, "weight_sized_kg": s.weight_sized,
+                          "feasible": s.feasible} for s in res.sizings]
+    return out
+
+
+def _finite(x: float) -> float | None:
+    return x if isfinite(x) else None
+
+
+def write_design(res: DesignResult, out: Path) -> list[Path]:
+    """summary.json, report.html, report.md and design.xlsx in `out`, each written atomically."""
+    from .report import render_html, render_markdown, write_workbook
+    out.mkdir(parents=True, exist_ok=True)
+    summary = json.dumps(summary_json(res), indent=2, sort_keys=False) + "\n"
+    return [write_atomic(out / "summary.json", summary),
+            write_atomic(out / "report.html", render_html(res)),
+            write_atomic(out / "report.md", render_markdown(res)),
+            write_atomic(out / "design.xlsx", lambda p: write_workbook(res, p))]

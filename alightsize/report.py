@@ -1,0 +1,138 @@
+"""Appendix IV-style stress sheets and Appendix V-style weight sheets: HTML, Markdown and XLSX."""
+
+from __future__ import annotations
+
+from math import isfinite
+from pathlib import Path
+
+import jinja2
+from openpyxl import Workbook
+from openpyxl.styles import Font
+
+from . import __version__
+from .checks import Step
+from .resources import data_dir
+from .units import fmt, to_display, unit_label
+
+
+def _step(step: Step, system: str) -> dict:
+    names = {n: n for n, _, _ in step.inputs}
+    values = {n: fmt(v, d, system) for n, v, d in step.inputs}
+    return {"label": step.label, "symbol": step.symbol, "formula": step.formula.format(**names),
+            "substituted": step.formula.format(**values), "value": fmt(step.value, step.dim, system)}
+
+
+def _factor(f: float) -> str:
+    return f"{f:.2f}" if isfinite(f) else "∞"
+
+
+def _dims(item, system: str) -> str:
+    s = item.section
+    if s is None:
+        return ""
+    parts = [f"{k.replace('_', ' ')} {fmt(v, 'length', system)}" for k, v in s.dims.items()]
+    parts += [f"{k} {fmt(v, {'area': 'area', 'inertia': 'second_moment', 'c': 'length'}[k], system)} (printed)"
+              for k, v in s.overrides.items()]
+    return f"{s.shape}: " + ", ".join(parts)
+
+
+def context(res) -> dict:
+    """Everything the templates show, already formatted in the config's display units."""
+    cfg, system = res.config, res.config.units
+    sheets = []
+    for item in res.items:
+        recs = [r for r in res.records if r.item is item]
+        sheets.append({
+            "name": item.name, "count": item.count, "material": item.material.name, "size": _dims(item, system),
+            "note": item.note,
+            "checks": [{"kind": item.checks[r.index].kind, "mode": r.outcome.mode, "note": item.checks[r.index].note,
+                        "steps": [_step(s, system) for s in r.outcome.steps],
+                        "allowable": fmt(r.outcome.allowable, "stress", system) if r.outcome.allowable else "",
+                        "factor": _factor(r.outcome.factor), "required": f"{r.required:.2f}", "ok": r.ok}
+                       for r in recs]})
+    weights = [{"label": w.label, "count": w.count, "each": fmt(w.each, "mass", system),
+                "total": fmt(w.count * w.each, "mass", system), "steps": [_step(s, system) for s in w.steps]}
+               for w in res.weights]
+    total = res.per_leg * cfg.legs
+    sizing = [{"item": s.item, "dimension": s.dimension.replace("_", " "), "printed": fmt(s.printed, "length", system),
+               "sized": fmt(s.sized, "length", system), "f_printed": _factor(s.factor_printed),
+               "f_sized": _factor(s.factor_sized), "feasible": s.feasible,
+               "w_printed": fmt(s.weight_printed, "mass", system) if s.weight_printed else "",
+               "w_sized": fmt(s.weight_sized, "mass", system) if s.weight_sized else "",
+               "saved": fmt(s.weight_printed - s.weight_sized, "mass", system)
+               if s.weight_printed and s.weight_sized else ""} for s in res.sizings]
+    return {"title": cfg.title, "configuration": cfg.configuration, "source": cfg.path.name, "units": system,
+            "version": __version__, "ok": res.ok, "sheets": sheets, "weights": weights, "sizing": sizing,
+            "per_leg": fmt(res.per_leg, "mass", system), "legs": cfg.legs, "total": fmt(total, "mass", system),
+            "capsule": fmt(cfg.capsule_mass, "mass", system) if cfg.capsule_mass else "",
+            "percent": f"{100 * total / cfg.capsule_mass:.2f}" if cfg.capsule_mass else "",
+            "failed": [f"{r.item.name} / {r.item.checks[r.index].kind}" for r in res.records if not r.ok]}
+
+
+def _md_escape(text: str) -> str:
+    out = str(text)
+    for ch in "\\`*_[]<>|#":
+        out = out.replace(ch, "\\" + ch)
+    return out
+
+
+def _env(autoescape: bool) -> jinja2.Environment:
+    env = jinja2.Environment(loader=jinja2.FileSystemLoader(str(data_dir("templates"))),
+                             autoescape=autoescape, undefined=jinja2.StrictUndefined,
+                             trim_blocks=True, lstrip_blocks=True, keep_trailing_newline=True)
+    env.filters["md"] = _md_escape
+    return env
+
+
+def render_html(res) -> str:
+    return _env(True).get_template("design_report.html.j2").render(**context(res))
+
+
+def render_markdown(res) -> str:
+    return _env(False).get_template("design_report.md.j2").render(**context(res))
+
+
+def _text(cell, value) -> None:
+    """Put user text in a cell as text, never as a formula."""
+    cell.value = value
+    if isinstance(value, str):
+        cell.data_type = "s"
+
+
+def write_workbook(res, path: Path) -> None:
+    """Stress sheet and weight sheet, values in the display units, numbers as numbers."""
+    cfg, system = res.config, res.config.units
+    wb = Workbook()
+    ws = wb.active
+    ws.title = "Stress"
+    su = unit_label("stress", system)
+    head = ["Item", "Count per leg", "Material", "Check", "Failure mode", f"Stress ({su})", f"Allowable ({su})",
+            "Design factor", "Required", "OK"]
+    ws.append(head)
+    for r in res.records:
+        o = r.outcome
+        row = [None, r.item.count, None, r.item.checks[r.index].kind, o.mode,
+               round(to_display(o.stress, "stress", system), 1) if o.stress is not None else None,
+               round(to_display(o.allowable, "stress", system), 1) if o.allowable is not None else None,
+               round(o.factor, 4) if isfinite(o.factor) else None, r.required, "yes" if r.ok else "NO"]
+        ws.append(row)
+        _text(ws.cell(ws.max_row, 1), r.item.name)
+        _text(ws.cell(ws.max_row, 3), r.item.material.name)
+    wu = unit_label("mass", system)
+    wsw = wb.create_sheet("Weights")
+    wsw.append(["Item", "Count per leg", f"Weight each ({wu})", f"Weight per leg ({wu})"])
+    for w in res.weights:
+        each = round(to_display(w.each, "mass", system), 4)
+        wsw.append([None, w.count, each, round(each * w.count, 4)])
+        _text(wsw.cell(wsw.max_row, 1), w.label)
+    per_leg = to_display(res.per_leg, "mass", system)
+    wsw.append(["Total each leg", None, None, round(per_leg, 4)])
+    wsw.append([f"Total {cfg.legs} legs", None, None, round(per_leg * cfg.legs, 4)])
+    if cfg.capsule_mass:
+        wsw.append(["Percent of capsule", None, None, round(100 * res.per_leg * cfg.legs / cfg.capsule_mass, 3)])
+    for sheet in (ws, wsw):
+        for c in sheet[1]:
+            c.font = Font(bold=True)
+        for col in sheet.columns:
+            sheet.column_dimensions[col[0].column_letter].width = max(12, max(len(str(c.value or "")) for c in col) + 2)
+    wb.save(path)
