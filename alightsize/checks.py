@@ -271,22 +271,26 @@ def _shear_outcome(sr: float, st: float, load: float, mat: Material, steps: list
     return Outcome("plate_bending", load, tau, allow, stress.design_factor(allow, tau), tuple(steps))
 
 
-def _plate_common(p, s, mat, fn, label, ref) -> Outcome:
+_FIXED = "3 {W} ({m}+1) / (2π {m} {t}²) [ln({a}/{r0}) + {r0}²/(4 {a}²)]"
+_SUPPORTED = "3 {W} / (2π {m} {t}²) [{m} + ({m}+1) ln({a}/{r0}) - ({m}-1) {r0}²/(4 {a}²)]"
+
+
+def _plate_common(p, s, mat, fn, label, ref, formula) -> Outcome:
     a, t = _plate_geometry(p, s)
     sr, st = fn(p["W"], t, a, p["r0"], mat.poisson_m)
-    steps = [Step(f"{label} ({ref})", "σr = σt", f"{label}: W={{W}}, t={{t}}, a={{a}}, r0={{r0}}, m={{m}}",
+    steps = [Step(f"{label} ({ref})", "σr = σt", formula,
                   (("W", p["W"], "force"), ("t", t, "length"), ("a", a, "length"), ("r0", p["r0"], "length"),
                    ("m", mat.poisson_m, "dimensionless")), st, "stress")]
     return _shear_outcome(sr, st, p["W"], mat, steps)
 
 
 def _plate_fixed(p, s, mat) -> Outcome:
-    return _plate_common(p, s, mat, plates.fixed_center_load, "fixed edge, central load", "Roark 1954 p. 196")
+    return _plate_common(p, s, mat, plates.fixed_center_load, "Fixed edge, central load", "Roark 1954 p. 196", _FIXED)
 
 
 def _plate_supported(p, s, mat) -> Outcome:
-    return _plate_common(p, s, mat, plates.supported_center_load, "supported edge, central load",
-                         "Roark 1954 p. 194-195")
+    return _plate_common(p, s, mat, plates.supported_center_load, "Supported edge, central load",
+                         "Roark 1954 p. 194-195", _SUPPORTED)
 
 
 def _plate_moment(p, s, mat) -> Outcome:
@@ -298,8 +302,9 @@ def _plate_moment(p, s, mat) -> Outcome:
     steps += [Step("Stress due to moment (Roark 1954 p. 197)", "σM",
                    "3 {M} / (4 π" + ("²" if p["pi_squared"] else "") + " {t}² {r0}) [1 + (m+1)/m ln(2(0.45 {a} - {r0}) / (0.45 k {a}))]",
                    (("M", m, "moment"), ("t", t, "length"), ("r0", p["r0"], "length"), ("a", a, "length")), sm, "stress"),
-              Step("Stress due to axial load (Roark 1954 p. 196)", "σW", "fixed edge, central load: W={W}, t={t}, a={a}, r0={r0}",
-                   (("W", p["W"], "force"), ("t", t, "length"), ("a", a, "length"), ("r0", p["r0"], "length")), sw, "stress")]
+              Step("Stress due to axial load (Roark 1954 p. 196)", "σW", _FIXED,
+                   (("W", p["W"], "force"), ("t", t, "length"), ("a", a, "length"), ("r0", p["r0"], "length"),
+                    ("m", mat.poisson_m, "dimensionless")), sw, "stress")]
     total = sm + sw
     return _shear_outcome(total, total, p["W"], mat, steps)
 
@@ -322,10 +327,11 @@ def _plate_eccentric(p, s, mat) -> Outcome:
                                                          mat.poisson_m, p["a_t"])
     ins = (("W", p["W"], "force"), ("W'", p["W_total"], "force"), ("t", t, "length"), ("a", a, "length"),
            ("p", p["p"], "length"), ("r0", p["r0"], "length"))
+    ecc = "-3 {W} / (2π m {t}²) [m + (m+1) ln(({a}-{p})/{r0}) - (m-1) {r0}²/(4({a}-{p})²)]"
     steps = [Step("Radial stress, eccentric + distributed load (Roark 1954 p. 194-195)", "σr",
-                  "W={W}, W'={W'}, t={t}, a={a}, p={p}, r0={r0}", ins, sr, "stress"),
+                  ecc + " + 3 {W'} / (8π m {t}²) (3m+1)(1 - {p}²/{a}²)", ins, sr, "stress"),
              Step("Tangential stress, eccentric + distributed load (Roark 1954 p. 194-195)", "σt",
-                  "W={W}, W'={W'}, t={t}, a={a}, p={p}, r0={r0}", ins, st, "stress")]
+                  ecc + " + 3 {W'} / (8π m {t}²) [(3m+1) - (m+3) {p}²/a²]", ins, st, "stress")]
     return _shear_outcome(sr, st, p["W"], mat, steps)
 
 

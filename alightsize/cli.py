@@ -57,6 +57,21 @@ def _scale(args) -> int:
     return 0
 
 
+def _reports(args) -> int:
+    from .design import run_design, write_design
+    from .design_config import read_design
+    configs = sorted(Path(args.examples).glob("*.toml"))
+    if not configs:
+        raise InputError(args.examples, "", "a folder of design configs (*.toml)", "none")
+    status = 0
+    for cfg in configs:
+        res = run_design(read_design(cfg))
+        write_design(res, Path(args.out) / cfg.stem)
+        print(f"{cfg.stem}: {'ok' if res.ok else 'CHECK FAILED'}")
+        status |= 0 if res.ok else 1
+    return status
+
+
 def parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="alightsize", description=__doc__.split("(")[0].strip())
     p.add_argument("--version", action="version", version=f"alightsize {__version__}")
@@ -75,6 +90,10 @@ def parser() -> argparse.ArgumentParser:
     s.add_argument("--mass", type=float, required=True, help="mass scale, full / model")
     s.add_argument("--json", help="write the factors as JSON (alightsize.scale/1)")
     s.set_defaults(run=_scale)
+    r = sub.add_parser("reports", help="regenerate the reference reports of the shipped examples")
+    r.add_argument("--examples", default="examples/affdl-tr-66-33", help="folder of design configs")
+    r.add_argument("--out", default="reports/affdl-tr-66-33", help="output folder")
+    r.set_defaults(run=_reports)
     return p
 
 

@@ -114,6 +114,13 @@ class Node:
             raise self.error(name, "an array of strings", _describe(value))
         return list(value)
 
+    def allow(self, names) -> None:
+        """Reject keys outside `names` before reading, so a typo is reported rather than a missing key."""
+        unknown = sorted(set(self.data) - set(names))
+        if unknown:
+            raise self.error(unknown[0], "one of the known keys (" + ", ".join(sorted(names)) + ")",
+                             f"unknown key {unknown[0]!r}")
+
     def finish(self) -> None:
         """Reject keys nobody read: a typo must never pass silently."""
         unknown = sorted(set(self.data) - self._read)

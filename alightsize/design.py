@@ -89,7 +89,7 @@ def write_design(res: DesignResult, out: Path) -> list[Path]:
     """summary.json, report.html, report.md and design.xlsx in `out`, each written atomically."""
     from .report import render_html, render_markdown, write_workbook
     out.mkdir(parents=True, exist_ok=True)
-    summary = json.dumps(summary_json(res), indent=2, sort_keys=False) + "\n"
+    summary = json.dumps(summary_json(res), indent=2, allow_nan=False) + "\n"
     return [write_atomic(out / "summary.json", summary),
             write_atomic(out / "report.html", render_html(res)),
             write_atomic(out / "report.md", render_markdown(res)),

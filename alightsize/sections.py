@@ -78,6 +78,7 @@ class Section:
 def read_section(node: Node) -> Section:
     shape = node.string("shape", choices=tuple(SHAPES))
     names, overridable = SHAPES[shape]
+    node.allow(("shape", *names, *overridable))
     dims = {n: node.quantity(n, "length") for n in names if node.has(n)}
     if shape == "tube":
         if ("outside_diameter" in dims) == ("inside_diameter" in dims):

@@ -45,7 +45,7 @@ def size_item(item: Item, grid: int = 64, rtol: float = 1e-9) -> Sizing:
         feasible = best is not None
         best = candidates[-1] if best is None else best
     else:
-        xs = np.linspace(spec.low, spec.high, grid)
+        xs = [float(x) for x in np.linspace(spec.low, spec.high, grid)]
         ok = [f(x) >= need for x in xs]
         if not any(ok):
             best, feasible = spec.high, False

@@ -1,0 +1,95 @@
+"""`alightsize audit` / `design` exit codes, CONTRACTS.md JSON, JUnit, and bad-input messages."""
+
+import json
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from alightsize.cli import main
+from conftest import EXAMPLES
+
+
+def run(*args) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "alightsize", *map(str, args)], capture_output=True, text=True)
+
+
+def test_audit_passes_all_four_examples(example, tmp_path):
+    out = tmp_path / "a.json"
+    junit = tmp_path / "a.xml"
+    assert main(["audit", str(example), "--json", str(out), "--junit", str(junit)]) == 0
+    doc = json.loads(out.read_text())
+    assert doc["schema"] == "alightsize.audit/1" and doc["ok"] is True
+    keys = {"configuration", "item", "check", "load_N", "stress_Pa", "allowable_Pa", "design_factor", "ok"}
+    assert all(keys <= set(c) for c in doc["checks"]) and doc["checks"]
+    assert 'failures="0"' in junit.read_text()
+
+
+def _thin(text: str, item: str, new_wall: str) -> str:
+    block = re.compile(r'(name = "' + re.escape(item) + r'"\n(?:.*\n)*?section = \{[^}]*wall = ")([^"]+)(")')
+    out, n = block.subn(lambda m: m.group(1) + new_wall + m.group(3), text, count=1)
+    assert n == 1
+    return out
+
+
+def test_audit_fails_when_a_wall_is_thinned(tmp_path):
+    # Upper Truss, 33,784 lbf on pi (2.75 - t) t: f = 1.25 at t = 0.0675 in; at t = 0.060 in
+    # A = 0.5071 in^2, sigma = 66,620 psi, f = 74,000 / 66,620 = 1.11 < 1.2 -> exit 1.
+    cfg = tmp_path / "thin.toml"
+    cfg.write_text(_thin((EXAMPLES / "articulated_3457.toml").read_text(), "Upper Truss", "0.060 in"))
+    junit = tmp_path / "j.xml"
+    js = tmp_path / "a.json"
+    assert main(["audit", str(cfg), "--junit", str(junit), "--json", str(js)]) == 1
+    doc = json.loads(js.read_text())
+    bad = [c for c in doc["checks"] if not c["ok"]]
+    assert [(c["item"], c["check"]) for c in bad] == [("Upper Truss", "compression")]
+    assert bad[0]["design_factor"] == pytest.approx(74000 / (33784 / (3.14159265 * 2.69 * 0.060)), rel=1e-6)
+    assert 'failures="1"' in junit.read_text()
+
+
+@pytest.mark.parametrize("edit, key, found", [
+    (lambda t: t.replace('wall = "0.0675 in"', 'wal = "0.0675 in"'), "item[0].section.wal", "unknown key"),
+    (lambda t: t.replace('load = "33784 lbf"', 'load = "33784 lb"', 1), "item[0].check[0].load", "33784 lb"),
+    (lambda t: t.replace('load = "33784 lbf"', 'load = "-3 lbf"', 1), "item[0].check[0].load", "-3 lbf"),
+    (lambda t: t.replace('material = "be-31al"', 'material = "unobtainium"', 1), "item[0].material", "unobtainium"),
+    (lambda t: t.replace('kind = "compression"', 'kind = "compresion"', 1), "item[0].check[0].kind", "compresion"),
+    (lambda t: t.replace("[design]", "[design\n"), "", "syntax error"),
+])
+def test_bad_input_exits_2_naming_file_key_expected_found(tmp_path, edit, key, found):
+    cfg = tmp_path / "bad.toml"
+    cfg.write_text(edit((EXAMPLES / "articulated_3457.toml").read_text()))
+    for command in (["audit", cfg], ["design", cfg, "--out", tmp_path / "out"]):
+        r = run(*command)
+        assert r.returncode == 2, r.stderr
+        assert "Traceback" not in r.stderr
+        assert str(cfg) in r.stderr and key in r.stderr and "expected" in r.stderr and found in r.stderr
+    assert not (tmp_path / "out").exists()
+
+
+def test_missing_file_exits_2(tmp_path):
+    r = run("audit", tmp_path / "nope.toml")
+    assert r.returncode == 2 and "no such file" in r.stderr
+
+
+def test_design_writes_contract_summary(tmp_path):
+    assert main(["design", str(EXAMPLES / "articulated_9.toml"), "--out", str(tmp_path)]) == 0
+    doc = json.loads((tmp_path / "summary.json").read_text())
+    assert doc["schema"] == "alightsize.design/1" and doc["ok"] is True
+    w = doc["weights"]["9"]
+    # Table 26: legs x per-leg weight = total, and fraction = total / 300 lb (closed-form arithmetic).
+    assert w["legs"] == 4 and w["total_kg"] == pytest.approx(4 * w["per_leg_kg"], rel=1e-12)
+    assert w["fraction_of_capsule"] == pytest.approx(w["total_kg"] / (300 * 0.45359237), rel=1e-12)
+    assert w["per_leg_kg"] == pytest.approx(sum(i["count_per_leg"] * i["weight_each_kg"] for i in w["items"]))
+    for name in ("report.html", "report.md", "design.xlsx"):
+        assert (tmp_path / name).stat().st_size > 0
+    assert not list(Path(tmp_path).glob(".*.tmp"))
+
+
+def test_scale_json(tmp_path):
+    out = tmp_path / "s.json"
+    assert main(["scale", "--length", "4", "--mass", "15.2", "--json", str(out)]) == 0
+    doc = json.loads(out.read_text())
+    assert doc["schema"] == "alightsize.scale/1" and doc["factors"]["time"] == pytest.approx(2.0)
+    assert run("scale", "--length", "-1", "--mass", "2").returncode == 2
