@@ -72,3 +72,23 @@ def test_installed_distribution_carries_materials_and_templates():
         pytest.skip("editable install: data folders are read from the checkout")
     assert "alightsize/_data/materials/7178-t6.toml" in names
     assert "alightsize/_data/templates/design_report.html.j2" in names
+
+
+def test_si_display_and_user_material(tmp_path):
+    # A user material by path, and [report] units = "SI": the same stress shown in MPa.
+    (tmp_path / "mats").mkdir()
+    (tmp_path / "mats" / "my-al.toml").write_text(
+        'name = "My Al"\nyield_strength = "475.7 MPa"\ndensity = "2768 kg/m^3"\nelastic_modulus = "68.9 GPa"\n'
+        'poisson_m = 3.33\n')
+    text = (EXAMPLES / "articulated_9.toml").read_text().replace('units = "US"', 'units = "SI"')
+    text = text.replace('legs = 4', 'legs = 4\nmaterials = ["mats"]').replace('"7178-t6"', '"my-al"')
+    cfg = tmp_path / "si.toml"
+    cfg.write_text(text)
+    res = run_design(read_design(cfg))
+    md = render_markdown(res)
+    # 475.7 MPa = 69,000 psi to 4 figures, so the Peg Leg Cone factor is unchanged: 69,000/57,370 = 1.20.
+    cone = next(r for r in res.records if r.item.name == "Peg Leg Cone")
+    assert cone.outcome.factor == pytest.approx(475.7e6 / (5852 * 4.4482216 / (10 * 0.101 ** 2 * 0.0254 ** 2)), rel=1e-6)
+    tables = [line for line in md.splitlines() if line.startswith("|")]
+    assert any("475.7 MPa" in line for line in tables) and not any("psi" in line for line in tables)
+    assert "My Al" in md
