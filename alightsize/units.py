@@ -43,9 +43,9 @@ DIMS = {d.name: d for d in (
     Dim("angular_velocity", 0, 0, -1),
 )}
 
-# What a user most likely meant when the dimension is wrong.
-_HINTS = {("force", "mass"): " (write lbf for pound-force; lb is pound-mass)",
-          ("moment", "[mass] * [length]"): " (write lbf*in for a moment)"}
+# What a user most likely meant when the dimension is wrong: (wanted, found) -> hint.
+_HINTS = {("force", (1, 0, 0)): " (write lbf for pound-force; lb is pound-mass)",
+          ("moment", (1, 1, 0)): " (write lbf*in for a moment; lb is pound-mass)"}
 
 
 def dimension_of(q: pint.Quantity) -> tuple[int, int, int]:
@@ -77,8 +77,7 @@ def parse(text: str | float | int, dim: str) -> float:
         raise ValueError(f"an angle like \"{example(dim)}\"")
     want = DIMS[dim]
     if dimension_of(q) != (want.mass, want.length, want.time):
-        found = str(q.dimensionality)
-        hint = _HINTS.get((dim, "mass" if found == "[mass]" else found), "")
+        hint = _HINTS.get((dim, dimension_of(q)), "")
         raise ValueError(f"a {dim} like \"{example(dim)}\"{hint}")
     value = float(q.to_base_units().magnitude)
     if value != value or value in (float("inf"), float("-inf")):
