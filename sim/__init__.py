@@ -1,0 +1,1 @@
+"""alightsize simulator: leg kinematics and (later) landing dynamics. Never imports alightsize."""

@@ -1,0 +1,109 @@
+"""Articulated leg (parallelogram + peg leg) footpad kinematics, AFFDL-TR-66-33 Sec. V.F.
+
+Forward position eq. 38-40 as corrected in GUIDE.md (subroutine FORCE); inverse from a footpad
+position to (alpha, beta, psi) by a scalar equation in alpha whose roots are all bracketed, then the
+root nearest the previous alpha is taken (as SINALP does with its quartic eq. 41), so the solution
+never jumps to another branch at a root crossing. SI units, angles in radians, numpy-vectorized.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import brentq, minimize_scalar
+
+
+@dataclass(frozen=True)
+class ArticulatedGeometry:
+    """Lengths (m) of Fig. 22-25: AU parallelogram member, AO peg-leg axis offset, AS ring lever arm,
+    AL peg-leg height, AE pivot height above the peg-leg top."""
+
+    AU: float
+    AO: float
+    AS: float
+    AL: float
+    AE: float
+
+
+def tip_radius(g: ArticulatedGeometry, alpha):
+    """Horizontal reach of the peg-leg tip about its axis, AS - AS cos(alpha) + AL sin(alpha) (eq. 38-39)."""
+    return g.AS * (1 - np.cos(alpha)) + g.AL * np.sin(alpha)
+
+
+def footpad(g: ArticulatedGeometry, alpha, beta, psi):
+    """Footpad position (S1', S2', S3') in the leg frame (eq. 38-40, FORCE)."""
+    r = tip_radius(g, alpha)
+    return (g.AU * np.cos(psi) + g.AO + r * np.cos(beta),
+            r * np.sin(beta),
+            g.AU * np.sin(psi) - g.AE - g.AS * np.sin(alpha) - g.AL * np.cos(alpha))
+
+
+def _sin_psi(g, s3, alpha):
+    """sin(psi) from the vertical equation: (AS sin a + AL cos a + S3 + AE) / AU (FORCE)."""
+    return (g.AS * np.sin(alpha) + g.AL * np.cos(alpha) + s3 + g.AE) / g.AU
+
+
+def residual(g: ArticulatedGeometry, s, alpha):
+    """F(alpha) = (S1 - AO - AU cos psi)^2 + S2^2 - r(alpha)^2, zero at a consistent alpha; NaN where the
+    vertical equation has no psi (|sin psi| > 1). Its roots are those of the report's quartic eq. 41."""
+    sp = _sin_psi(g, s[2], alpha)
+    cp = np.sqrt(np.where(np.abs(sp) <= 1, 1 - sp * sp, np.nan))
+    return (s[0] - g.AO - g.AU * cp) ** 2 + s[1] ** 2 - tip_radius(g, alpha) ** 2
+
+
+class Unreachable(ValueError):
+    """No (alpha, beta, psi) in range places the footpad at the given point."""
+
+
+def roots(g: ArticulatedGeometry, s, alpha_max: float, samples: int = 256, tol: float = 1e-13) -> list[float]:
+    """All alpha in [0, alpha_max] with F(alpha) = 0: sign changes bracketed (brentq) plus double roots
+    (grazing minima of |F|), so two roots that meet and cross are both found."""
+    a = np.linspace(0.0, alpha_max, samples)
+    f = residual(g, s, a)
+    scale = g.AU ** 2
+    found = []
+    for i in range(samples - 1):
+        f0, f1 = f[i], f[i + 1]
+        if not (np.isfinite(f0) and np.isfinite(f1)):
+            continue
+        if f0 == 0:
+            found.append(a[i])
+        elif f0 * f1 < 0:
+            found.append(brentq(lambda x: residual(g, s, x), a[i], a[i + 1], xtol=1e-15, rtol=1e-15))
+    # Double roots: |F| has an interior local minimum without a sign change.
+    af = np.abs(f)
+    for i in range(1, samples - 1):
+        if np.isfinite(af[i - 1:i + 2]).all() and af[i] <= af[i - 1] and af[i] <= af[i + 1] \
+                and f[i - 1] * f[i + 1] > 0 and f[i - 1] * f[i] > 0:
+            m = minimize_scalar(lambda x: abs(residual(g, s, x)), bounds=(a[i - 1], a[i + 1]), method="bounded",
+                                options={"xatol": 1e-14})
+            if abs(m.fun) < tol * scale:
+                found.append(float(m.x))
+    if f[-1] == 0:
+        found.append(alpha_max)
+    return sorted(set(float(x) for x in found))
+
+
+def inverse(g: ArticulatedGeometry, s, alpha_max: float, alpha_prev: float | None = None,
+            beta_prev: float = 0.0, psi_range: tuple[float, float] = (-np.pi / 2, np.pi / 2)):
+    """(alpha, beta, psi) placing the footpad at s; the root nearest `alpha_prev` (smallest alpha when None).
+
+    At alpha = 0 the tip lies on the peg-leg axis and beta is undefined: `beta_prev` is returned (0 by
+    default), so a history stays continuous and never holds NaN.
+    """
+    cands = []
+    for a in roots(g, s, alpha_max):
+        psi = float(np.arcsin(np.clip(_sin_psi(g, s[2], a), -1, 1)))
+        if psi_range[0] - 1e-12 <= psi <= psi_range[1] + 1e-12:
+            cands.append((a, psi))
+    if not cands:
+        raise Unreachable(f"footpad {tuple(map(float, s))} is out of reach for alpha in [0, {alpha_max}]")
+    ref = 0.0 if alpha_prev is None else alpha_prev
+    a, psi = min(cands, key=lambda c: abs(c[0] - ref))
+    r = tip_radius(g, a)
+    if r <= 1e-12 * g.AU:
+        beta = beta_prev
+    else:
+        beta = float(np.arctan2(s[1], s[0] - g.AO - g.AU * np.cos(psi)))
+    return a, beta, psi

@@ -1,0 +1,47 @@
+"""Articulated-leg footpad kinematics: forward/inverse round trip, alpha = 0 convention, root crossing."""
+
+import numpy as np
+import pytest
+
+from sim.articulated_kinematics import ArticulatedGeometry, Unreachable, footpad, inverse, residual, roots
+
+IN = 0.0254
+# AU = 44 in, AL = 25 in, ring 16 in (AS = 8 in) from Sec. III.B; AO and AE are placeholders until the
+# reference geometry is reconstructed (issue 3); the identities tested here hold for any geometry.
+G = ArticulatedGeometry(AU=44 * IN, AO=10 * IN, AS=8 * IN, AL=25 * IN, AE=4 * IN)
+A_MAX = np.radians(45)
+
+
+def test_round_trip_over_the_reachable_range():
+    rng = np.random.default_rng(1)
+    n = 2000
+    alpha = rng.uniform(1e-3, A_MAX, n)
+    beta = rng.uniform(-np.pi, np.pi, n)
+    psi = rng.uniform(np.radians(-30), np.radians(30), n)
+    s = np.array(footpad(G, alpha, beta, psi))
+    worst = 0.0
+    for k in range(n):
+        a, b, p = inverse(G, s[:, k], A_MAX, alpha_prev=alpha[k])
+        db = (b - beta[k] + np.pi) % (2 * np.pi) - np.pi
+        worst = max(worst, abs(a - alpha[k]), abs(db), abs(p - psi[k]))
+    # Issue 3: within 1e-10 rad (brentq to 1e-15 in alpha; beta, psi from closed forms).
+    assert worst < 1e-10
+
+
+@pytest.mark.parametrize("psi_deg", [-30.0, 0.0, 30.0])
+def test_alpha_zero_gives_defined_beta(psi_deg):
+    psi = np.radians(psi_deg)
+    s = footpad(G, 0.0, 1.234, psi)         # beta has no effect at alpha = 0
+    a, b, p = inverse(G, s, A_MAX, beta_prev=0.7)
+    assert a == pytest.approx(0.0, abs=1e-10) and p == pytest.approx(psi, abs=1e-10)
+    assert b == 0.7 and not np.isnan(b)
+
+
+def test_residual_vanishes_at_the_true_alpha():
+    s = footpad(G, 0.3, 0.5, 0.1)
+    assert abs(residual(G, s, 0.3)) < 1e-15
+
+
+def test_unreachable_point_is_an_error_not_nan():
+    with pytest.raises(Unreachable):
+        inverse(G, (10.0, 0.0, -10.0), A_MAX)
