@@ -86,11 +86,14 @@ def _finite(x: float) -> float | None:
 
 
 def write_design(res: DesignResult, out: Path) -> list[Path]:
-    """summary.json, report.html, report.md and design.xlsx in `out`, each written atomically."""
+    """summary.json, report.html, report.md, design.xlsx and charts in `out`, each written atomically."""
+    from .plots import design_factor_chart, weight_chart
     from .report import render_html, render_markdown, write_workbook
     out.mkdir(parents=True, exist_ok=True)
     summary = json.dumps(summary_json(res), indent=2, allow_nan=False) + "\n"
     return [write_atomic(out / "summary.json", summary),
             write_atomic(out / "report.html", render_html(res)),
             write_atomic(out / "report.md", render_markdown(res)),
-            write_atomic(out / "design.xlsx", lambda p: write_workbook(res, p))]
+            write_atomic(out / "design.xlsx", lambda p: write_workbook(res, p)),
+            write_atomic(out / "design_factors.png", lambda p: design_factor_chart(res, p)),
+            write_atomic(out / "weights.png", lambda p: weight_chart(res, p))]
