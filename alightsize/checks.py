@@ -142,12 +142,16 @@ def _moment(p: dict) -> tuple[float, Step | None]:
     return m, Step("Moment", "M", "{P} {l}", (("P", p["Mf"], "force"), ("l", p["arm"], "length")), m, "moment")
 
 
+def _direct_step(load: float, area: float, label: str = "Compressive stress", symbol: str = "σc") -> Step:
+    """sigma = P / A as a stress-sheet line."""
+    return Step(label, symbol, "{P} / {A}", (("P", load, "force"), ("A", area, "area")),
+                stress.direct_stress(load, area), "stress")
+
+
 def _compression(p, s: Section, mat: Material, mode="compression", label="Compressive stress") -> Outcome:
-    a = s.area()
-    sig = stress.direct_stress(p["P"], a)
+    step = _direct_step(p["P"], s.area(), label, "σ")
     fy = mat.yield_strength
-    steps = (Step(label, "σ", "{P} / {A}", (("P", p["P"], "force"), ("A", a, "area")), sig, "stress"),)
-    return Outcome(mode, p["P"], sig, fy, stress.design_factor(fy, sig), steps)
+    return Outcome(mode, p["P"], step.value, fy, stress.design_factor(fy, step.value), (step,))
 
 
 def _tension(p, s, mat) -> Outcome:
@@ -171,12 +175,11 @@ def _bending(p, s, mat) -> Outcome:
 
 
 def _combined_parts(p, s) -> tuple[float, list[Step]]:
-    a = s.area()
-    sc = stress.direct_stress(p["P"], a)
+    direct = _direct_step(p["P"], s.area(), symbol="σC")
+    sc = direct.value
     _, sb, steps = _bending_steps(p, s)
     total = stress.combined_stress(sc, sb)
-    steps = [Step("Compressive stress", "σC", "{P} / {A}", (("P", p["P"], "force"), ("A", a, "area")), sc, "stress"),
-             *steps,
+    steps = [direct, *steps,
              Step("Combined stress", "σmax", "{σB} + {σC}", (("σB", sb, "stress"), ("σC", sc, "stress")), total, "stress")]
     return total, steps
 
@@ -190,10 +193,11 @@ def _combined(p, s, mat) -> Outcome:
 def _column(p, s, mat) -> Outcome:
     a, i, e = s.area(), s.inertia(), mat.elastic_modulus
     k = sqrt(i / a)
-    sig = stress.direct_stress(p["P"], a)
+    direct = _direct_step(p["P"], a)
+    sig = direct.value
     crit = stress.euler_stress(e, p["L"], k)
     pcr = stress.euler_load(e, i, p["L"])
-    steps = (Step("Compressive stress", "σc", "{P} / {A}", (("P", p["P"], "force"), ("A", a, "area")), sig, "stress"),
+    steps = (direct,
              Step("Radius of gyration", "k", "√({I} / {A})", (("I", i, "second_moment"), ("A", a, "area")), k, "length"),
              Step("Critical column stress", "σcB", "π² {E} / ({L} / {k})²",
                   (("E", e, "stress"), ("L", p["L"], "length"), ("k", k, "length")), crit, "stress"),
@@ -208,9 +212,8 @@ def _local(p, s, mat) -> Outcome:
     if "M" in p or "Mf" in p:
         applied, steps = _combined_parts(p, s)
     else:
-        applied = stress.direct_stress(p["P"], s.area())
-        steps = [Step("Compressive stress", "σc", "{P} / {A}", (("P", p["P"], "force"), ("A", s.area(), "area")),
-                      applied, "stress")]
+        steps = [_direct_step(p["P"], s.area())]
+        applied = steps[0].value
     crit = stress.local_buckling_stress(e, t, d)
     steps.append(Step("Local buckling stress", "σLB", "0.4 {E} {t} / {D}",
                       (("E", e, "stress"), ("t", t, "length"), ("D", d, "length")), crit, "stress"))

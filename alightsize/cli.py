@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import sys
 import traceback
 from pathlib import Path
@@ -43,8 +44,8 @@ def _audit(args) -> int:
 def _scale(args) -> int:
     from .atomic import write_atomic
     from .scaling import table27
-    if not (args.length > 0 and args.mass > 0):
-        raise InputError("(command line)", "--length/--mass", "positive scale factors",
+    if not all(math.isfinite(v) and v > 0 for v in (args.length, args.mass)):
+        raise InputError("(command line)", "--length/--mass", "finite positive scale factors",
                          f"length {args.length}, mass {args.mass}")
     factors = table27(args.length, args.mass)
     width = max(map(len, factors))

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import tomllib
 from pathlib import Path
 from typing import Any
@@ -66,8 +67,8 @@ class Node:
             return default
         if isinstance(value, bool) or not isinstance(value, (int, float)):
             raise self.error(name, "a number", _describe(value))
-        if value != value or (positive and value <= 0):
-            raise self.error(name, "a positive number" if positive else "a number", _describe(value))
+        if not math.isfinite(value) or (positive and value <= 0):
+            raise self.error(name, "a finite positive number" if positive else "a finite number", _describe(value))
         return float(value)
 
     def integer(self, name: str, default: Any = _MISSING, minimum: int = 1) -> int:

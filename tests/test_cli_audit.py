@@ -56,6 +56,8 @@ def test_audit_fails_when_a_wall_is_thinned(tmp_path):
     (lambda t: t.replace('material = "be-31al"', 'material = "unobtainium"', 1), "item[0].material", "unobtainium"),
     (lambda t: t.replace('kind = "compression"', 'kind = "compresion"', 1), "item[0].check[0].kind", "compresion"),
     (lambda t: t.replace("[design]", "[design\n"), "", "syntax error"),
+    (lambda t: t.replace("required_design_factor = 1.2", "required_design_factor = inf"),
+     "audit.required_design_factor", "inf"),
 ])
 def test_bad_input_exits_2_naming_file_key_expected_found(tmp_path, edit, key, found):
     cfg = tmp_path / "bad.toml"
@@ -93,3 +95,4 @@ def test_scale_json(tmp_path):
     doc = json.loads(out.read_text())
     assert doc["schema"] == "alightsize.scale/1" and doc["factors"]["time"] == pytest.approx(2.0)
     assert run("scale", "--length", "-1", "--mass", "2").returncode == 2
+    assert run("scale", "--length", "inf", "--mass", "2").returncode == 2    # no Infinity in the JSON
