@@ -24,8 +24,9 @@ def _describe(value: Any) -> str:
 class Node:
     """A TOML table being read: every key read is recorded so `finish` can reject unknown keys."""
 
-    def __init__(self, file: str | Path, path: str, data: dict):
+    def __init__(self, file: str | Path, path: str, data: dict, context: dict | None = None):
         self.file, self.path, self.data = str(file), path, data
+        self.context = {} if context is None else context     # shared by the whole tree (hooks, records)
         self._read: set[str] = set()
 
     def key(self, name: str) -> str:
@@ -53,6 +54,8 @@ class Node:
         return self.parse_quantity(name, value, dim, positive)
 
     def parse_quantity(self, name: str, value: Any, dim: str, positive: bool = True) -> float:
+        if isinstance(value, dict) and dim == "force" and "force_reference" in self.context:
+            return self.context["force_reference"](self, name, value)
         try:
             si = units.parse(value, dim)
         except ValueError as exc:
@@ -101,13 +104,13 @@ class Node:
             return None
         if not isinstance(value, dict):
             raise self.error(name, "a table", _describe(value))
-        return Node(self.file, self.key(name), value)
+        return Node(self.file, self.key(name), value, self.context)
 
     def tables(self, name: str, optional: bool = False) -> list[Node]:
         value = self.raw(name, [] if optional else _MISSING)
         if not isinstance(value, list) or not all(isinstance(v, dict) for v in value):
             raise self.error(name, "an array of tables", _describe(value))
-        return [Node(self.file, f"{self.key(name)}[{i}]", v) for i, v in enumerate(value)]
+        return [Node(self.file, f"{self.key(name)}[{i}]", v, self.context) for i, v in enumerate(value)]
 
     def strings(self, name: str, default: Any = _MISSING) -> list[str]:
         value = self.raw(name, default)

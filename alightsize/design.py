@@ -73,6 +73,9 @@ def summary_json(res: DesignResult) -> dict:
     out = {"schema": SCHEMA, "ok": res.ok, "configuration": res.config.configuration,
            "audit": {k: v for k, v in audit_json(res.config, res.records).items() if k != "schema"},
            "weights": weights_json(res)}
+    if res.config.loads is not None:
+        from .loads import loads_json
+        out["loads"] = {k: v for k, v in loads_json(res.config.loads).items() if k != "schema"}
     if res.sizings:
         out["sizing"] = [{"item": s.item, "dimension": s.dimension, "printed_m": s.printed, "sized_m": s.sized,
                           "design_factor_printed": _finite(s.factor_printed), "design_factor_sized": _finite(s.factor_sized),
@@ -96,4 +99,22 @@ def write_design(res: DesignResult, out: Path) -> list[Path]:
             write_atomic(out / "report.md", render_markdown(res)),
             write_atomic(out / "design.xlsx", lambda p: write_workbook(res, p)),
             write_atomic(out / "design_factors.png", lambda p: design_factor_chart(res, p)),
-            write_atomic(out / "weights.png", lambda p: weight_chart(res, p))]
+            write_atomic(out / "weights.png", lambda p: weight_chart(res, p))] + _loads_files(res, out)
+
+
+def governing_cases(cfg: DesignConfig) -> list[str]:
+    """Configurations whose envelope extremes the checks use, in the order of the loads file."""
+    used = {r.extreme.configuration for r in cfg.load_refs if r.extreme is not None}
+    return [c.name for c in cfg.loads.config.cases if c.name in used] if cfg.loads else []
+
+
+def _loads_files(res: DesignResult, out: Path) -> list[Path]:
+    """The envelopes' workbook, and heat maps of the governing configurations, beside the design report."""
+    from .loads_output import heatmap, safe_name, write_workbook as write_loads_workbook
+    loads, system = res.config.loads, res.config.units
+    if loads is None:
+        return []
+    files = [write_atomic(out / "max_member_loads.xlsx", lambda p: write_loads_workbook(loads, p, system))]
+    for name in governing_cases(res.config):
+        files.append(write_atomic(out / f"heatmap_{safe_name(name)}.png", lambda p, n=name: heatmap(loads, n, p, system)))
+    return files

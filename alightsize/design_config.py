@@ -5,8 +5,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from .config import load_toml
+from .config import Node, load_toml
 from .items import Item, read_item
+from .loads import LoadReference, LoadsResult, attach, load_from
 from .materials import library
 
 UNIT_SYSTEMS = ("US", "SI")
@@ -23,6 +24,26 @@ class DesignConfig:
     required: float
     decimals: int | None
     items: tuple[Item, ...]
+    loads: LoadsResult | None = None
+    load_refs: tuple[LoadReference, ...] = ()
+
+
+def _loads(root: Node, path: Path) -> LoadsResult | None:
+    """[loads] file = "...": envelopes computed now, so checks can reference them (App. III -> App. IV)."""
+    node = root.table("loads", optional=True)
+    if node is None:
+        def refuse(n: Node, name: str, ref: dict) -> float:
+            raise n.error(name, "a force with units, or an envelope reference with [loads] file = ... in the design "
+                          "config", "an envelope reference but no [loads] file")
+        root.context["force_reference"] = refuse
+        return None
+    file = path.parent / node.string("file")
+    node.finish()
+    if not file.exists():
+        raise node.error("file", "the path of an existing loads config", str(file))
+    res = load_from(file)
+    attach(root, res)
+    return res
 
 
 def read_design(path: str | Path) -> DesignConfig:
@@ -49,10 +70,12 @@ def read_design(path: str | Path) -> DesignConfig:
         if not p.exists():
             raise d.error("materials", "paths of existing material files or folders", str(p))
     mats = library(extra)
+    loads = _loads(root, path)
     items = tuple(read_item(n, mats, required) for n in root.tables("item"))
     names = [i.name for i in items]
     dup = next((n for n in names if names.count(n) > 1), None)
     if dup:
         raise root.error("item", "item names unique within a configuration", f"{dup!r} twice")
     root.finish()
-    return DesignConfig(path, configuration, title, capsule, legs, units, required, decimals, items)
+    return DesignConfig(path, configuration, title, capsule, legs, units, required, decimals, items, loads,
+                        tuple(root.context.get("load_references", ())))

@@ -61,12 +61,45 @@ def context(res) -> dict:
                "w_sized": fmt(s.weight_sized, "mass", system) if s.weight_sized else "",
                "saved": fmt(s.weight_printed - s.weight_sized, "mass", system)
                if s.weight_printed and s.weight_sized else ""} for s in res.sizings]
-    return {"title": cfg.title, "configuration": cfg.configuration, "source": cfg.path.name, "units": system,
+    return {"loads": _loads_context(cfg, system), "references": _references(cfg, system),
+            "title": cfg.title, "configuration": cfg.configuration, "source": cfg.path.name, "units": system,
             "version": __version__, "ok": res.ok, "sheets": sheets, "weights": weights, "sizing": sizing,
             "per_leg": fmt(res.per_leg, "mass", system), "legs": cfg.legs, "total": fmt(total, "mass", system),
             "capsule": fmt(cfg.capsule_mass, "mass", system) if cfg.capsule_mass else "",
             "percent": f"{100 * total / cfg.capsule_mass:.2f}" if cfg.capsule_mass else "",
             "failed": [f"{r.item.name} / {r.item.checks[r.index].kind}" for r in res.records if not r.ok]}
+
+
+def _loads_context(cfg, system: str) -> dict | None:
+    from .design import governing_cases
+    from .loads_output import context as loads_context
+    return loads_context(cfg.loads, system, governing_cases(cfg)) if cfg.loads is not None else None
+
+
+def _reference_label(cfg, key: str) -> str:
+    """"item[0].check[1].load" -> "Upper Truss / column_buckling (load)"."""
+    import re
+    m = re.match(r"item\[(\d+)\]\.check\[(\d+)\]\.(.+)$", key)
+    if not m:
+        return key
+    item = cfg.items[int(m.group(1))]
+    return f"{item.name} / {item.checks[int(m.group(2))].kind} ({m.group(3)})"
+
+
+def _references(cfg, system: str) -> list[dict]:
+    from math import degrees
+    return [{"key": _reference_label(cfg, r.key), "envelope": r.envelope, "member": r.member, "sense": r.sense, "factor": f"{r.factor:g}",
+             "value": fmt(r.value, "force", system),
+             "at": ", ".join(f"{degrees(a):+.0f}" for a in r.extreme.at) if r.extreme else "",
+             "configuration": r.extreme.configuration if r.extreme else ""} for r in cfg.load_refs]
+
+
+def render_loads(res, system: str, kind: str) -> str:
+    """The Appendix III report of `alightsize loads` (kind "md" or "html")."""
+    from .loads_output import context as loads_context
+    ctx = {"title": res.config.title, "source": res.config.path.name, "units": system, "version": __version__,
+           "loads": loads_context(res, system), "references": []}
+    return _env(kind == "html").get_template(f"loads_report.{kind}.j2").render(**ctx)
 
 
 def _md_escape(text: str) -> str:

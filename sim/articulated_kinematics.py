@@ -16,14 +16,30 @@ from scipy.optimize import brentq, minimize_scalar
 
 @dataclass(frozen=True)
 class ArticulatedGeometry:
-    """Lengths (m) of Fig. 22-25: AU parallelogram member, AO peg-leg axis offset, AS ring lever arm,
-    AL peg-leg height, AE pivot height above the peg-leg top."""
+    """Lengths (m) and angle (rad) of Fig. 22-25, FORTRAN names (GUIDE.md table).
+
+    AU parallelogram member, AO peg-leg axis offset from the lower outboard pivot, AS fulcrum-ring lever
+    arm, AL peg-leg height, AE drop from the lower outboard pivot to the ring plane; AD pivot spacing at
+    angle PHI from vertical; AA, AB inboard and AH, AG outboard offsets of the upper cell; AP, AQ the
+    lower cell's attachments above and below the ring plane; SPRG, PLD return spring rate (N/m) and
+    preload (N). Only the first five enter the footpad kinematics.
+    """
 
     AU: float
     AO: float
     AS: float
     AL: float
     AE: float
+    AD: float = 0.0
+    AA: float = 0.0
+    AB: float = 0.0
+    AG: float = 0.0
+    AH: float = 0.0
+    AP: float = 0.0
+    AQ: float = 0.0
+    PHI: float = 0.0
+    SPRG: float = 0.0
+    PLD: float = 0.0
 
 
 def tip_radius(g: ArticulatedGeometry, alpha):
@@ -107,3 +123,23 @@ def inverse(g: ArticulatedGeometry, s, alpha_max: float, alpha_prev: float | Non
     else:
         beta = float(np.arctan2(s[1], s[0] - g.AO - g.AU * np.cos(psi)))
     return a, beta, psi
+
+
+def quartic(g: ArticulatedGeometry, s):
+    """Coefficients (highest power first) of the quartic in sin(alpha) of eq. 41, as FORCE forms them
+    (C70 ... C74). Squaring twice adds extraneous roots, which can cross the true one along a path: the
+    hazard the report's deflation guards against and the bracketed `roots` above never meets."""
+    c21, c31 = s[0] - g.AO, s[2] + g.AE
+    c16 = 2 * g.AS * (g.AL + c31)
+    c17 = -2 * (g.AS ** 2 - g.AL * c31)
+    c20sq, c19sq = c21 ** 2, s[1] ** 2
+    c18 = 2 * g.AS ** 2 + g.AL ** 2 - g.AU ** 2 + c31 ** 2 - c19sq + c20sq
+    c25 = c17 ** 2 - 4 * g.AS ** 2 * c20sq
+    c26 = c16 ** 2 - 4 * g.AL ** 2 * c20sq
+    c27 = 2 * c16 * c17 + 8 * g.AS * g.AL * c20sq
+    c28 = 2 * c16 * c18 - 8 * g.AS * g.AL * c20sq
+    c29 = 2 * c17 * c18 + 8 * g.AS ** 2 * c20sq
+    c35 = 4 * (g.AS ** 2 - c19sq) * c20sq - c18 ** 2
+    c2625, c2535 = c26 - c25, c25 - c35
+    return (c2625 ** 2 + c27 ** 2, 2 * (c28 * c2625 + c27 * c29), 2 * c2625 * c2535 + c28 ** 2 + c29 ** 2 - c27 ** 2,
+            2 * (c28 * c2535 - c27 * c29), c2535 ** 2 - c29 ** 2)

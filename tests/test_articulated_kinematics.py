@@ -45,3 +45,40 @@ def test_residual_vanishes_at_the_true_alpha():
 def test_unreachable_point_is_an_error_not_nan():
     with pytest.raises(Unreachable):
         inverse(G, (10.0, 0.0, -10.0), A_MAX)
+
+
+def _crossing(g, alpha, beta, psi):
+    """Signed gap between sin(alpha) and the nearest other root of the eq. 41 quartic in [0, 1] (NaN if
+    none): a sign change along a path is a crossing of the true root by an extraneous one."""
+    from sim.articulated_kinematics import quartic
+    r = np.roots(quartic(g, footpad(g, alpha, beta, psi)))
+    r = r[np.abs(r.imag) < 1e-9].real
+    true = np.argmin(np.abs(r - np.sin(alpha)))
+    others = np.delete(r, true)
+    others = others[(others >= 0) & (others <= 1)]
+    if len(others) == 0:
+        return np.nan
+    return (others - np.sin(alpha))[np.argmin(np.abs(others - np.sin(alpha)))]
+
+
+def test_inverse_follows_the_true_root_through_a_quartic_root_crossing():
+    from alightsize.loads_config import read_loads
+    from conftest import EXAMPLES
+    g = read_loads(EXAMPLES / "loads" / "articulated.toml").cases[0].geometry
+    rng = np.random.default_rng(7)
+    alphas = np.radians(np.linspace(0.5, 45, 400))
+    for _ in range(200):                       # find a straight path in alpha that crosses (seeded)
+        beta, psi = rng.uniform(-np.pi, np.pi), rng.uniform(np.radians(-30), np.radians(30))
+        gap = np.array([_crossing(g, a, beta, psi) for a in alphas])
+        ok = np.isfinite(gap[:-1]) & np.isfinite(gap[1:]) & (gap[:-1] * gap[1:] < 0)
+        if ok.any():
+            break
+    else:
+        pytest.fail("no path with a quartic root crossing found")
+    worst, prev = 0.0, None
+    for a in alphas:                           # drive the inverse along the path, through the crossing
+        s = footpad(g, a, beta, psi)
+        a2, b2, p2 = inverse(g, s, A_MAX, alpha_prev=prev)
+        worst = max(worst, abs(a2 - a), abs((b2 - beta + np.pi) % (2 * np.pi) - np.pi), abs(p2 - psi))
+        prev = a2
+    assert worst < 1e-10

@@ -1,0 +1,121 @@
+"""Quasi-static member-load envelopes of the articulated leg (AFFDL-TR-66-33 App. III, Tables 14-22).
+
+Both cells stroke at the loads their curves give at each leg position; every member load is evaluated
+over a grid of (alpha, beta, psi) at once (numpy) and each member's largest tension and compression are
+kept with the position where they occur. Ties go to the smallest psi, then alpha, then beta, in grid
+order. Combined envelopes (Tables 21-22) keep the extreme over several configurations.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from sim.articulated_cells import lower_deflection, return_spring_force, upper_deflection
+from sim.articulated_kinematics import ArticulatedGeometry
+from sim.articulated_statics import MEMBERS, TrussAngles, member_loads, reactions
+from sim.crush_curve import CrushCurve
+
+
+@dataclass(frozen=True)
+class Grid:
+    """Sweep grid, radians: alpha and beta values, psi step (psi runs from each case's initial to final)."""
+
+    alpha: tuple[float, ...]
+    beta: tuple[float, ...]
+    psi_step: float
+
+    def psi(self, start: float, stop: float) -> np.ndarray:
+        n = int(np.floor((stop - start) / self.psi_step + 1e-9))
+        return start + self.psi_step * np.arange(n + 1)
+
+    def size(self, start: float, stop: float) -> int:
+        return len(self.alpha) * len(self.beta) * len(self.psi(start, stop))
+
+
+def default_grid() -> Grid:
+    """alpha 0-45 deg by 1, beta -175..180 deg by 5 (the tables' (-180, 180] convention), psi by 1 deg."""
+    return Grid(tuple(np.radians(np.arange(0, 46))), tuple(np.radians(np.arange(-175, 181, 5))), np.radians(1.0))
+
+
+@dataclass(frozen=True)
+class LegCase:
+    """One configuration: geometry, truss angles, cell curves and the psi range swept."""
+
+    name: str
+    geometry: ArticulatedGeometry
+    truss: TrussAngles
+    upper: CrushCurve
+    lower: CrushCurve
+    psi_initial: float
+    psi_final: float
+
+
+@dataclass(frozen=True)
+class Extreme:
+    value: float                           # N
+    at: tuple[float, float, float]         # alpha, beta, psi (rad)
+    configuration: str
+
+
+@dataclass(frozen=True)
+class MemberEnvelope:
+    member: str
+    tension: Extreme | None
+    compression: Extreme | None
+
+
+def cell_forces(case: LegCase, alpha, psi):
+    """(AF1, AF2) at the given positions from the loading curves (return spring added to AF2, FORCE)."""
+    g = case.geometry
+    af1 = case.upper.loading_force(upper_deflection(g, psi, case.psi_initial))
+    af2 = case.lower.loading_force(lower_deflection(g, alpha)) + return_spring_force(g, alpha)
+    return af1, af2
+
+
+def member_fields(case: LegCase, grid: Grid):
+    """(psi, alpha, beta) axes and every member's load over them, arrays shaped (n_psi, n_alpha, n_beta)."""
+    psi = grid.psi(case.psi_initial, case.psi_final)
+    alpha, beta = np.asarray(grid.alpha), np.asarray(grid.beta)
+    P, A, B = psi[:, None, None], alpha[None, :, None], beta[None, None, :]
+    af1, af2 = cell_forces(case, A, P)
+    r = reactions(case.geometry, A, B, P, af1, af2)
+    loads = member_loads(r, case.truss)
+    return (psi, alpha, beta), {m: np.broadcast_to(loads[m], (len(psi), len(alpha), len(beta))) for m in MEMBERS}
+
+
+def _extreme(field: np.ndarray, axes, pick, config: str) -> Extreme:
+    i = np.unravel_index(int(pick(field)), field.shape)
+    psi, alpha, beta = (ax[k] for ax, k in zip(axes, i))
+    return Extreme(float(field[i]), (float(alpha), float(beta), float(psi)), config)
+
+
+def envelope(case: LegCase, grid: Grid) -> tuple[MemberEnvelope, ...]:
+    """Each member's maximum tension (> 0) and compression (< 0) over the grid, with positions."""
+    axes, fields = member_fields(case, grid)
+    out = []
+    for m in MEMBERS:
+        f = fields[m]
+        if not np.all(np.isfinite(f)):
+            raise ValueError(f"member {m} is not finite somewhere on the grid of configuration {case.name!r}")
+        hi, lo = f.max(), f.min()
+        out.append(MemberEnvelope(
+            m,
+            _extreme(f, axes, np.argmax, case.name) if hi > 0 else None,
+            _extreme(f, axes, np.argmin, case.name) if lo < 0 else None))
+    return tuple(out)
+
+
+def combine(envelopes: list[tuple[MemberEnvelope, ...]]) -> tuple[MemberEnvelope, ...]:
+    """Combined envelope (Tables 21-22): per member the largest tension and compression of any case;
+    ties go to the earlier case."""
+    out = []
+    for rows in zip(*envelopes):
+        ten = [r.tension for r in rows if r.tension is not None]
+        com = [r.compression for r in rows if r.compression is not None]
+        out.append(MemberEnvelope(
+            rows[0].member,
+            max(ten, key=lambda e: e.value) if ten else None,
+            min(com, key=lambda e: e.value) if com else None))
+    return tuple(out)

@@ -1,0 +1,182 @@
+"""Loads config: leg geometry, truss angles, sweep grid, configurations with their cell curves, combined
+envelopes and the telescoping free body. Read and validated at the boundary; everything SI inside."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from math import radians
+from pathlib import Path
+
+import numpy as np
+
+from sim.articulated_kinematics import ArticulatedGeometry
+from sim.articulated_statics import TrussAngles
+from sim.crush_curve import CrushCurve
+
+from .config import Node, load_toml
+from .load_envelopes import Grid, LegCase, default_grid
+from .telescoping_loads import TelescopingLeg
+
+LENGTHS = ("AU", "AD", "AS", "AL", "AO", "AE", "AA", "AB", "AG", "AH", "AP", "AQ")
+POSITIVE = ("AU", "AD", "AS", "AL")
+
+
+@dataclass(frozen=True)
+class LoadsConfig:
+    path: Path
+    title: str
+    units: str
+    grid: Grid
+    cases: tuple[LegCase, ...]
+    combined: tuple[tuple[str, tuple[str, ...]], ...]
+    telescoping: TelescopingLeg | None
+
+
+def _quantities(node: Node, name: str, dim: str) -> list[float]:
+    values = node.raw(name)
+    if not isinstance(values, list) or len(values) < 2:
+        raise node.error(name, f"an array of two or more {dim} quantities", repr(values))
+    return [node.parse_quantity(f"{name}[{i}]", v, dim, positive=False) for i, v in enumerate(values)]
+
+
+def _curve(node: Node) -> CrushCurve:
+    node.allow(("deflection", "force", "factor", "note"))
+    d = _quantities(node, "deflection", "length")
+    f = _quantities(node, "force", "force")
+    factor = node.number("factor", 1.0)
+    node.string("note", "")
+    node.finish()
+    if len(d) != len(f):
+        raise node.error("force", f"as many forces as deflections ({len(d)})", f"{len(f)}")
+    if d[0] < 0 or any(b < a for a, b in zip(d, d[1:])):
+        raise node.error("deflection", "deflections from 0 upward, never decreasing", repr(node.raw("deflection")))
+    if any(x < 0 for x in f):
+        raise node.error("force", "forces of 0 or more (a cell never pulls)", repr(node.raw("force")))
+    return CrushCurve(tuple(d), tuple(factor * x for x in f))
+
+
+def _geometry(node: Node) -> ArticulatedGeometry:
+    node.allow(LENGTHS + ("PHI", "return_spring_rate", "return_spring_preload", "note"))
+    dims = {k: node.quantity(k, "length") if k in POSITIVE else node.quantity(k, "length", default=0.0, positive=False)
+            for k in LENGTHS}
+    phi = node.quantity("PHI", "angle", default=0.0, positive=False)
+    sprg = node.quantity("return_spring_rate", "spring_rate", default=0.0, positive=False)
+    pld = node.quantity("return_spring_preload", "force", default=0.0, positive=False)
+    node.string("note", "")
+    node.finish()
+    if sprg < 0 or pld < 0:
+        raise node.error("return_spring_rate", "a return spring rate and preload of 0 or more", f"{sprg}, {pld}")
+    return ArticulatedGeometry(PHI=phi, SPRG=sprg, PLD=pld, **dims)
+
+
+def _truss(node: Node) -> TrussAngles:
+    node.allow(("theta", "gamma", "rho", "note"))
+    a = {k: node.quantity(k, "angle") for k in ("theta", "gamma", "rho")}
+    node.string("note", "")
+    node.finish()
+    if not all(0 < v < radians(90) for v in a.values()) or a["gamma"] + a["rho"] >= radians(180):
+        raise node.error("theta", "truss angles between 0 and 90 deg", ", ".join(f"{np.degrees(v):.4g} deg" for v in a.values()))
+    return TrussAngles(**a)
+
+
+def _range(node: Node, name: str, lo: float, hi: float) -> tuple[float, ...]:
+    r = node.table(name)
+    r.allow(("from", "to", "step"))
+    start, stop = r.quantity("from", "angle", positive=False), r.quantity("to", "angle", positive=False)
+    step = r.quantity("step", "angle")
+    r.finish()
+    if not (lo - 1e-12 <= start <= stop <= hi + 1e-12):
+        raise r.error("to", f"{np.degrees(lo):g} deg <= from <= to <= {np.degrees(hi):g} deg",
+                      f"from {np.degrees(start):g} to {np.degrees(stop):g} deg")
+    n = int(np.floor((stop - start) / step + 1e-9))
+    return tuple(start + step * np.arange(n + 1))
+
+
+def _grid(node: Node | None) -> Grid:
+    if node is None:
+        return default_grid()
+    node.allow(("alpha", "beta", "psi_step"))
+    base = default_grid()
+    alpha = _range(node, "alpha", 0.0, radians(90)) if node.has("alpha") else base.alpha
+    beta = _range(node, "beta", radians(-360), radians(360)) if node.has("beta") else base.beta
+    step = node.quantity("psi_step", "angle", default=base.psi_step)
+    node.finish()
+    return Grid(alpha, beta, step)
+
+
+def _case(node: Node, geometry: ArticulatedGeometry | None, truss: TrussAngles | None, where: Node) -> LegCase:
+    node.allow(("name", "note", "psi_initial", "psi_final", "upper", "lower", "length_scale",
+                "return_spring_rate", "return_spring_preload"))
+    if geometry is None or truss is None:
+        raise where.error("geometry" if geometry is None else "truss", "a [geometry] and a [truss] table for the "
+                          "articulated configurations", "none")
+    name = node.string("name")
+    node.string("note", "")
+    p0 = node.quantity("psi_initial", "angle", positive=False)
+    p1 = node.quantity("psi_final", "angle", positive=False)
+    if not (radians(-90) < p0 < p1 < radians(90)):
+        raise node.error("psi_final", "-90 deg < psi_initial < psi_final < 90 deg",
+                         f"{np.degrees(p0):g} and {np.degrees(p1):g} deg")
+    scale = node.number("length_scale", 1.0)
+    g = replace(geometry, **{k: scale * getattr(geometry, k) for k in LENGTHS})
+    if node.has("return_spring_rate") or node.has("return_spring_preload"):
+        g = replace(g, SPRG=node.quantity("return_spring_rate", "spring_rate", default=0.0, positive=False),
+                    PLD=node.quantity("return_spring_preload", "force", default=0.0, positive=False))
+    upper, lower = _curve(node.table("upper")), _curve(node.table("lower"))
+    node.finish()
+    return LegCase(name, g, truss, upper, lower, p0, p1)
+
+
+def _telescoping(node: Node) -> TelescopingLeg:
+    node.allow(("axial_crush", "rotational_crush", "pad_lever", "length", "bearing_length", "friction", "note"))
+    leg = TelescopingLeg(node.quantity("axial_crush", "force"), node.quantity("rotational_crush", "force"),
+                         node.quantity("pad_lever", "length"), node.quantity("length", "length"),
+                         node.quantity("bearing_length", "length"), node.number("friction", positive=False))
+    node.string("note", "")
+    node.finish()
+    if leg.pad_lever >= leg.length:
+        raise node.error("pad_lever", f"a pad lever shorter than the leg ({leg.length:.4g} m)", f"{leg.pad_lever:.4g} m")
+    if not 0 <= leg.friction < 1:
+        raise node.error("friction", "a friction coefficient in [0, 1)", f"{leg.friction}")
+    return leg
+
+
+def read_loads(path: str | Path) -> LoadsConfig:
+    """Read and validate a loads config; problems are InputErrors naming file and key path."""
+    path = Path(path)
+    root = load_toml(path)
+    root.allow(("loads", "report", "geometry", "truss", "grid", "configuration", "combined", "telescoping"))
+    head = root.table("loads", optional=True)
+    title = head.string("title", path.stem) if head else path.stem
+    if head:
+        head.finish()
+    rep = root.table("report", optional=True)
+    units = rep.string("units", "US", choices=("US", "SI")) if rep else "US"
+    if rep:
+        rep.finish()
+    geometry = _geometry(root.table("geometry")) if root.has("geometry") else None
+    truss = _truss(root.table("truss")) if root.has("truss") else None
+    grid = _grid(root.table("grid", optional=True))
+    cases = tuple(_case(n, geometry, truss, root) for n in root.tables("configuration", optional=True))
+    names = [c.name for c in cases]
+    dup = next((n for n in names if names.count(n) > 1), None)
+    if dup:
+        raise root.error("configuration", "configuration names unique", f"{dup!r} twice")
+    combined = []
+    for n in root.tables("combined", optional=True):
+        n.allow(("name", "configurations", "note"))
+        name, members = n.string("name"), n.strings("configurations")
+        n.string("note", "")
+        n.finish()
+        missing = [m for m in members if m not in names]
+        if missing or not members:
+            raise n.error("configurations", "names of configurations in this file (" + ", ".join(names) + ")",
+                          repr(missing or members))
+        if name in names or name in [c[0] for c in combined]:
+            raise n.error("name", "a name not used by a configuration or another combination", repr(name))
+        combined.append((name, tuple(members)))
+    tele = _telescoping(root.table("telescoping")) if root.has("telescoping") else None
+    root.finish()
+    if not cases and tele is None:
+        raise root.error("configuration", "at least one [[configuration]] or a [telescoping] table", "neither")
+    return LoadsConfig(path, title, units, grid, cases, tuple(combined), tele)

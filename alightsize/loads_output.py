@@ -1,0 +1,150 @@
+"""Writing the loads results: JSON, an XLSX laid out like Tables 14-22, heat maps, Appendix III reports."""
+
+from __future__ import annotations
+
+import json
+import re
+from math import degrees
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from openpyxl import Workbook  # noqa: E402
+from openpyxl.styles import Font  # noqa: E402
+
+from sim.articulated_statics import MEMBERS  # noqa: E402
+
+from .atomic import write_atomic  # noqa: E402
+from .load_envelopes import Extreme, member_fields  # noqa: E402
+from .loads import LoadsResult, loads_json  # noqa: E402
+from .units import fmt, to_display, unit_label  # noqa: E402
+
+LABELS = {"PL1": "PL1, (PL3)", "PL2": "PL2, (PL6)", "PU1": "PU1, (PU2)", "R1213": "R12/13"}
+_META = {"Software": None}
+
+
+def label(member: str) -> str:
+    """Member label as the tables print it (mirror-image members in parentheses)."""
+    return LABELS.get(member, member)
+
+
+def safe_name(name: str) -> str:
+    """A configuration name made safe for a file name."""
+    return re.sub(r"[^A-Za-z0-9_.-]", "_", name) or "_"
+
+
+def _row(e: Extreme | None, system: str, with_config: bool) -> dict | None:
+    if e is None:
+        return None
+    a, b, p = (degrees(x) for x in e.at)
+    return {"load": to_display(e.value, "force", system), "text": fmt(e.value, "force", system),
+            "alpha": f"{a:.1f}", "beta": f"{b:+.0f}" if abs(b) > 1e-9 else "0", "psi": f"{p:+.0f}" if abs(p) > 1e-9 else "0",
+            "configuration": e.configuration if with_config else ""}
+
+
+def tables(res: LoadsResult, system: str) -> list[dict]:
+    """Tables 14-22 as rows: member label, tension and compression with positions."""
+    out = []
+    for name, rows in res.envelopes.items():
+        combined = name in res.combined
+        title = (f"Maximum loads, combined configurations {', '.join(res.combined[name])}" if combined
+                 else f"Maximum loads, configuration {name}")
+        out.append({"name": name, "title": title, "combined": combined,
+                    "rows": [{"member": label(r.member), "tension": _row(r.tension, system, combined),
+                              "compression": _row(r.compression, system, combined)} for r in rows]})
+    return out
+
+
+def telescoping_rows(res: LoadsResult, system: str) -> list[dict]:
+    if res.telescoping is None:
+        return []
+    t = res.telescoping
+    rows = [{"name": k, "value": fmt(t[k], "force", system)} for k in ("P1", "P2")]
+    rows += [{"name": k, "value": fmt(t[k], "spring_rate", system)} for k in ("w2", "w1")]
+    rows += [{"name": k, "value": fmt(t[k], "force", system)} for k in ("P4", "P3")]
+    return rows
+
+
+def context(res: LoadsResult, system: str, heatmaps: list[str] | None = None) -> dict:
+    """Template context; `heatmaps` names the configurations whose heat maps are shown (default all)."""
+    names = [c.name for c in res.config.cases] if heatmaps is None else heatmaps
+    return {"tables": tables(res, system), "telescoping": telescoping_rows(res, system),
+            "heatmaps": [f"heatmap_{safe_name(n)}.png" for n in names],
+            "grid": {c.name: res.config.grid.size(c.psi_initial, c.psi_final) for c in res.config.cases}}
+
+
+def write_workbook(res: LoadsResult, path: Path, system: str) -> None:
+    """One sheet per configuration and per combination, laid out like Tables 14-22; user text is always a
+    string cell (never a formula)."""
+    wb = Workbook()
+    wb.remove(wb.active)
+    unit = unit_label("force", system)
+    for t in tables(res, system):
+        ws = wb.create_sheet(safe_name(t["name"])[:31])
+        ws.append([t["title"]])
+        ws["A1"].font = Font(bold=True)
+        ws.append(["Member", f"Load ({unit})", "alpha (deg)", "beta (deg)", "psi (deg)"]
+                  + (["Configuration"] if t["combined"] else []))
+        for r in t["rows"]:
+            for k, sense in enumerate(("tension", "compression")):
+                e = r[sense]
+                if e is None:
+                    continue
+                row = [r["member"] if k == 0 or r["tension"] is None else "", round(e["load"]), float(e["alpha"]),
+                       float(e["beta"]), float(e["psi"])] + ([e["configuration"]] if t["combined"] else [])
+                ws.append(row)
+                for c in ws[ws.max_row]:
+                    if isinstance(c.value, str):
+                        c.data_type = "s"
+    if res.telescoping is not None:
+        ws = wb.create_sheet("telescoping")
+        ws.append(["Telescoping leg free body (App. III)"])
+        for r in telescoping_rows(res, system):
+            ws.append([r["name"], r["value"]])
+            for c in ws[ws.max_row]:
+                c.data_type = "s"
+    wb.save(path)
+
+
+def heatmap(res: LoadsResult, case_name: str, path: Path, system: str) -> None:
+    """Each member's load over alpha-beta at the psi of its largest magnitude."""
+    case = next(c for c in res.config.cases if c.name == case_name)
+    (psi, alpha, beta), fields = member_fields(case, res.config.grid)
+    fig, axes = plt.subplots(2, 5, figsize=(17, 6.5), sharex=True, sharey=True)
+    a, b = np.degrees(alpha), np.degrees(beta)
+    extent = (a[0], a[-1], b[0], b[-1])
+    for ax, m in zip(axes.flat, MEMBERS):
+        f = to_display(np.asarray(fields[m]), "force", system)
+        k = int(np.unravel_index(np.argmax(np.abs(f)), f.shape)[0])
+        lim = float(np.max(np.abs(f[k]))) or 1.0
+        im = ax.imshow(f[k].T, origin="lower", extent=extent, aspect="auto", cmap="RdBu_r", vmin=-lim, vmax=lim,
+                       interpolation="nearest")
+        ax.set_title(f"{label(m)} at psi = {np.degrees(psi[k]):+.0f} deg", fontsize=9)
+        fig.colorbar(im, ax=ax, label=unit_label("force", system))
+    for ax in axes[1]:
+        ax.set_xlabel("alpha (deg)")
+    for ax in axes[:, 0]:
+        ax.set_ylabel("beta (deg)")
+    fig.suptitle(f"Configuration {case_name}: member loads (tension +) over alpha-beta at the governing psi")
+    fig.subplots_adjust(left=0.04, right=0.98, bottom=0.08, top=0.9, wspace=0.25, hspace=0.25)
+    fig.savefig(path, format="png", dpi=72, metadata=_META)
+    plt.close(fig)
+
+
+def write_loads(res: LoadsResult, out: Path, system: str | None = None) -> list[Path]:
+    """max_member_loads.json and .xlsx, heat maps and the Appendix III report, each written atomically."""
+    from .report import render_loads
+    system = system or res.config.units
+    out.mkdir(parents=True, exist_ok=True)
+    files = [write_atomic(out / "max_member_loads.json", json.dumps(loads_json(res), indent=2, allow_nan=False) + "\n"),
+             write_atomic(out / "max_member_loads.xlsx", lambda p: write_workbook(res, p, system))]
+    for c in res.config.cases:
+        files.append(write_atomic(out / f"heatmap_{safe_name(c.name)}.png", lambda p, n=c.name: heatmap(res, n, p, system)))
+    files.append(write_atomic(out / "loads.md", render_loads(res, system, "md")))
+    files.append(write_atomic(out / "loads.html", render_loads(res, system, "html")))
+    return files
+
+

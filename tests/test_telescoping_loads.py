@@ -1,0 +1,56 @@
+"""Telescoping leg: App. III free body against the printed numbers, kinematics eq. 12-21."""
+
+import numpy as np
+import pytest
+
+from alightsize.loads_config import read_loads
+from alightsize.telescoping_loads import free_body, side_loads, sliding_loads
+from sim.telescoping_kinematics import footpad, pad_deflection, spherical
+
+from conftest import EXAMPLES
+
+LBF, IN = 4.4482216152605, 0.0254
+LEG = read_loads(EXAMPLES / "loads" / "telescoping.toml").telescoping
+
+
+def test_side_loads_from_the_printed_inputs_and_the_recorded_discrepancy():
+    p1, p2 = (x / LBF for x in side_loads(LEG))
+    # sqrt(2) 1500 (15 / 30.5) = 1043.3 and sqrt(2) 1500 (1 - 15 / 30.5) = 1078.0 (exact arithmetic).
+    assert p1 == pytest.approx(1043.3, abs=0.05) and p2 == pytest.approx(1078.0, abs=0.05)
+    # RECORDED: the report prints P1 = 1045 and P2 = 1075; both follow from sqrt(2) AF2 taken as 2120 lb
+    # and a / rho taken as 0.493 (15 / 30.5 = 0.4918): 2120 x 0.493 = 1045.2, 2120 x 0.507 = 1074.8.
+    assert round(2120 * 0.493) == 1045 and round(2120 * 0.507) == 1075
+    assert p1 + p2 == pytest.approx(np.sqrt(2) * 1500, rel=1e-12)      # statics: P1 + P2 = sqrt(2) AF2
+
+
+def test_sliding_loads_from_the_printed_p1_reach_the_printed_digits():
+    out = {k: v for k, v in sliding_loads(LEG, 1045 * LBF).items()}
+    assert round(out["w2"] / (LBF / IN), -1) == 6070       # 6 (1045)(15.5) / 16 = 6074
+    assert round(out["w1"] / (LBF / IN)) == 261             # 1045 / 4 = 261.25
+    assert round(out["P4"] / LBF, -1) == 660                # 0.05 [261 (4) + 0.5 (6070)(4)] = 659.6
+    assert round(out["P3"] / LBF, -1) == 3090               # 3750 - 660
+
+
+def test_free_body_balances():
+    fb = free_body(LEG)
+    assert fb["P3"] + fb["P4"] == pytest.approx(LEG.axial_crush, rel=1e-12)
+    # The bearing distributions carry P1 (w1 chi) and the moment P1 (rho - a) (w2 chi^2 / 6).
+    chi = LEG.bearing_length
+    assert fb["w1"] * chi == pytest.approx(fb["P1"], rel=1e-12)
+    assert fb["w2"] * chi ** 2 / 6 == pytest.approx(fb["P1"] * (LEG.length - LEG.pad_lever), rel=1e-12)
+
+
+def test_spherical_coordinates_round_trip_and_alpha_zero():
+    rng = np.random.default_rng(2)
+    al, a, b = rng.uniform(0.5, 1.0, 1000), rng.uniform(1e-6, np.radians(80), 1000), rng.uniform(-np.pi, np.pi, 1000)
+    al2, a2, b2 = spherical(*footpad(al, a, b))
+    assert np.max(np.abs(al2 - al)) < 1e-14 and np.max(np.abs(a2 - a)) < 1e-12 and np.max(np.abs(b2 - b)) < 1e-9
+    al0, a0, b0 = spherical(0.0, 0.0, -0.7)          # alpha = 0: beta is set to 0 (Sec. V.E.1)
+    assert (al0, a0, b0) == (0.7, 0.0, 0.0)
+
+
+def test_small_angle_pad_deflection_differs_by_the_printed_1_2_percent_at_15_deg():
+    a = np.radians(15)
+    exact, small = pad_deflection(15 * IN, a, 0.0, 0.0), pad_deflection(15 * IN, a, 0.0, 0.0, small_angle=True)
+    assert round(100 * (small - exact) / exact, 1) == 1.2        # Sec. V.E.2: "1.2 percent ... at 15 degrees"
+    assert pad_deflection(15 * IN, a, 0.0, np.pi) == 0.0         # the pad opposite is never pulled
