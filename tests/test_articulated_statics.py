@@ -72,3 +72,27 @@ def test_truss_joints_balance():
 def test_method_is_checked():
     with pytest.raises(ValueError):
         reactions(G, 0.1, 0.0, 0.0, 1.0, 1.0, method="lu")
+
+
+def test_envelopes_follow_the_scaling_laws():
+    # Statics is homogeneous: lengths x L and forces x F leave the angles alone and scale every member
+    # load by F (Table 27: force ~ L^2 at acceleration scale 1). Config 9's geometry is the full-scale one
+    # x 1.825/4 (length_scale); scaling config 3 the same way must give config-3 loads x F at the same
+    # positions (to rounding, 1e-12).
+    from dataclasses import replace
+    from alightsize.load_envelopes import envelope
+    from alightsize.loads_config import LENGTHS
+    from sim.crush_curve import CrushCurve
+    L, F = 1.825 / 4, 0.1                      # F arbitrary (the 300 lb capsule: mass ratio 0.1)
+    case = CFG.cases[0]
+    g = replace(case.geometry, **{k: L * getattr(case.geometry, k) for k in LENGTHS}, PLD=F * case.geometry.PLD,
+                SPRG=F / L * case.geometry.SPRG)
+    scaled = replace(case, geometry=g,
+                     upper=CrushCurve(tuple(L * d for d in case.upper.deflection), tuple(F * f for f in case.upper.force)),
+                     lower=CrushCurve(tuple(L * d for d in case.lower.deflection), tuple(F * f for f in case.lower.force)))
+    assert CFG.cases[-1].geometry.AU == pytest.approx(L * G.AU, rel=1e-15)          # config 9, as shipped
+    for a, b in zip(envelope(case, CFG.grid), envelope(scaled, CFG.grid)):
+        for e, s in ((a.tension, b.tension), (a.compression, b.compression)):
+            assert (e is None) == (s is None)
+            if e is not None:
+                assert s.value == pytest.approx(F * e.value, rel=1e-12) and s.at == e.at
