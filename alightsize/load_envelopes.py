@@ -2,7 +2,9 @@
 
 Both cells stroke at the loads their curves give at each leg position; every member load is evaluated
 over a grid of (alpha, beta, psi) at once (numpy) and each member's largest tension and compression are
-kept with the position where they occur. Ties go to the smallest psi, then alpha, then beta, in grid
+kept with the position where they occur. Positions where a cell has stroked past the end of its
+crushing plateau (bottomed) are left out by default, as the report sweeps "stroking of the upper and
+lower absorbers at their crushing load". Ties go to the smallest psi, then alpha, then beta, in grid
 order. Combined envelopes (Tables 21-22) keep the extreme over several configurations.
 """
 
@@ -25,6 +27,7 @@ class Grid:
     alpha: tuple[float, ...]
     beta: tuple[float, ...]
     psi_step: float
+    include_bottomed: bool = False
 
     def psi(self, start: float, stop: float) -> np.ndarray:
         n = int(np.floor((stop - start) / self.psi_step + 1e-9))
@@ -74,15 +77,25 @@ def cell_forces(case: LegCase, alpha, psi):
     return af1, af2
 
 
+def stroking(case: LegCase, alpha, psi):
+    """True where neither cell has passed the end of its crushing plateau."""
+    g = case.geometry
+    return (upper_deflection(g, psi, case.psi_initial) <= case.upper.bottoming * (1 + 1e-12)) \
+        & (lower_deflection(g, alpha) <= case.lower.bottoming * (1 + 1e-12))
+
+
 def member_fields(case: LegCase, grid: Grid):
-    """(psi, alpha, beta) axes and every member's load over them, arrays shaped (n_psi, n_alpha, n_beta)."""
+    """(psi, alpha, beta) axes and every member's load over them, arrays shaped (n_psi, n_alpha, n_beta);
+    NaN at positions left out (a cell bottomed, unless the grid includes them)."""
     psi = grid.psi(case.psi_initial, case.psi_final)
     alpha, beta = np.asarray(grid.alpha), np.asarray(grid.beta)
     P, A, B = psi[:, None, None], alpha[None, :, None], beta[None, None, :]
     af1, af2 = cell_forces(case, A, P)
     r = reactions(case.geometry, A, B, P, af1, af2)
     loads = member_loads(r, case.truss)
-    return (psi, alpha, beta), {m: np.broadcast_to(loads[m], (len(psi), len(alpha), len(beta))) for m in MEMBERS}
+    shape = (len(psi), len(alpha), len(beta))
+    keep = np.ones(shape, bool) if grid.include_bottomed else np.broadcast_to(stroking(case, A, P), shape)
+    return (psi, alpha, beta), {m: np.where(keep, np.broadcast_to(loads[m], shape), np.nan) for m in MEMBERS}
 
 
 def _extreme(field: np.ndarray, axes, pick, config: str) -> Extreme:
@@ -94,16 +107,20 @@ def _extreme(field: np.ndarray, axes, pick, config: str) -> Extreme:
 def envelope(case: LegCase, grid: Grid) -> tuple[MemberEnvelope, ...]:
     """Each member's maximum tension (> 0) and compression (< 0) over the grid, with positions."""
     axes, fields = member_fields(case, grid)
+    psi, alpha, _ = axes
+    keep = grid.include_bottomed or stroking(case, alpha[None, :], psi[:, None])
+    if not np.any(keep):
+        raise ValueError(f"no grid position of configuration {case.name!r} has both cells on their crushing plateau")
     out = []
     for m in MEMBERS:
         f = fields[m]
-        if not np.all(np.isfinite(f)):
+        if np.any(np.isinf(f)) or np.any(np.isnan(f[np.broadcast_to(np.asarray(keep)[..., None], f.shape)])):
             raise ValueError(f"member {m} is not finite somewhere on the grid of configuration {case.name!r}")
-        hi, lo = f.max(), f.min()
+        hi, lo = np.nanmax(f), np.nanmin(f)
         out.append(MemberEnvelope(
             m,
-            _extreme(f, axes, np.argmax, case.name) if hi > 0 else None,
-            _extreme(f, axes, np.argmin, case.name) if lo < 0 else None))
+            _extreme(f, axes, np.nanargmax, case.name) if hi > 0 else None,
+            _extreme(f, axes, np.nanargmin, case.name) if lo < 0 else None))
     return tuple(out)
 
 

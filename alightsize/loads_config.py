@@ -95,13 +95,14 @@ def _range(node: Node, name: str, lo: float, hi: float) -> tuple[float, ...]:
 def _grid(node: Node | None) -> Grid:
     if node is None:
         return default_grid()
-    node.allow(("alpha", "beta", "psi_step"))
+    node.allow(("alpha", "beta", "psi_step", "bottomed"))
     base = default_grid()
     alpha = _range(node, "alpha", 0.0, radians(90)) if node.has("alpha") else base.alpha
     beta = _range(node, "beta", radians(-360), radians(360)) if node.has("beta") else base.beta
     step = node.quantity("psi_step", "angle", default=base.psi_step)
+    bottomed = node.string("bottomed", "exclude", choices=("exclude", "include"))
     node.finish()
-    return Grid(alpha, beta, step)
+    return Grid(alpha, beta, step, bottomed == "include")
 
 
 def _case(node: Node, geometry: ArticulatedGeometry | None, truss: TrussAngles | None, where: Node) -> LegCase:

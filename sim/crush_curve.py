@@ -27,6 +27,14 @@ class CrushCurve:
         f = np.interp(delta, self.deflection, self.force)
         return np.where(delta > 0, f, 0.0)
 
+    @property
+    def bottoming(self) -> float:
+        """Deflection at the end of the crushing plateau: the second-to-last point when the last segment
+        rises (the bottoming ramp), else the last point."""
+        if len(self.force) >= 3 and self.force[-1] > self.force[-2]:
+            return self.deflection[-2]
+        return self.deflection[-1]
+
     def scaled(self, factor: float) -> "CrushCurve":
         """The same curve with every force times `factor` (the report's special forces, Sec. VI.C)."""
         return CrushCurve(self.deflection, tuple(factor * f for f in self.force))

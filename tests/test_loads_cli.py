@@ -45,9 +45,9 @@ def test_envelope_is_the_grid_extreme_and_combined_takes_the_worst():
     _, fields = member_fields(case, cfg.grid)
     for row in res.envelopes[case.name]:
         f = fields[row.member]
-        assert row.tension.value == f.max()
+        assert row.tension.value == np.nanmax(f)
         if row.compression is not None:
-            assert row.compression.value == f.min()
+            assert row.compression.value == np.nanmin(f)
     for row in res.envelopes["3457"]:
         parts = [next(r for r in res.envelopes[n] if r.member == row.member) for n in ("3", "4", "5", "7")]
         assert row.tension.value == max(p.tension.value for p in parts)

@@ -1,0 +1,124 @@
+"""Member-load envelopes against Tables 14-22, the cell curves against Sec. IV, Fig. 10 force ratios.
+
+The geometry of examples/affdl-tr-66-33/loads/articulated.toml is fitted to configuration 3 only
+(docs/articulated-geometry.md); Tables 15-22 are held out. Tolerances: the issue's targets (5 % on the
+calibration table, 10 % held out); positions are compared within one grid step.
+"""
+
+from functools import lru_cache
+
+import numpy as np
+import pytest
+
+from alightsize.load_envelopes import cell_forces
+from alightsize.loads import run_loads
+from alightsize.loads_config import read_loads
+from sim.articulated_cells import lower_lever, upper_lever
+from sim.articulated_statics import member_loads, reactions
+
+from conftest import EXAMPLES
+from reference_tables_14_22 import CELL_CURVES, MAGNITUDE_ONLY, SUSPECTED_MISPRINTS, TABLES
+
+LBF, FT = 4.4482216152605, 0.3048
+LOADS = EXAMPLES / "loads" / "articulated.toml"
+
+
+@lru_cache(maxsize=1)
+def _result():
+    return run_loads(read_loads(LOADS))
+
+
+def _rows(config: str):
+    """(printed row, model extreme) per printed row; suspected misprints replaced by their correction."""
+    env = {r.member: r for r in _result().envelopes[config]}
+    out = []
+    for row in TABLES[config]:
+        member, value = row[0], row[1]
+        row = SUSPECTED_MISPRINTS.get((config, member, int(np.sign(value))), (row,))[0]
+        e = env[member]
+        if (config, member) in MAGNITUDE_ONLY:
+            model = max((x for x in (e.tension, e.compression) if x), key=lambda x: abs(x.value))
+        else:
+            model = e.tension if value > 0 else e.compression
+        out.append((row, model))
+    return out
+
+
+def _rel(row, model) -> float:
+    return abs(abs(model.value / LBF) - abs(row[1])) / abs(row[1])
+
+
+def _near(row, model) -> bool:
+    a, b, p = np.degrees(model.at)
+    db = (b - row[3] + 180) % 360 - 180
+    return abs(a - row[2]) <= 2 and abs(db) <= 10 and abs(p - row[4]) <= 1
+
+
+def _flat(config: str, row, model) -> bool:
+    """The model's load at the printed position is within 1 % of its extreme (the printed point is as
+    good a place for the extreme as the model's own). Combined tables: the source configurations."""
+    cases = read_loads(LOADS).cases
+    names = {"3457": ("3", "4", "5", "7"), "68": ("6", "8")}.get(config, (config,))
+    a, b, p = np.radians(row[2:5])
+    best = 0.0
+    for case in (c for c in cases if c.name in names):
+        af1, af2 = cell_forces(case, a, p)
+        load = member_loads(reactions(case.geometry, a, b, p, af1, af2), case.truss)[row[0]]
+        best = max(best, float(load) * np.sign(model.value))
+    return best >= 0.99 * abs(model.value)
+
+
+def test_table_14_calibration_within_5_percent():
+    errs = [_rel(r, m) for r, m in _rows("3")]
+    assert max(errs) < 0.05                                    # measured: max 4.3 %, median 1.1 %
+    near = sum(_near(r, m) for r, m in _rows("3"))
+    assert near >= 12                                          # measured: 12 of 17 within one grid step
+
+
+@pytest.mark.parametrize("config", ["4", "5", "6", "7", "8", "9", "3457", "68"])
+def test_held_out_tables_within_10_percent(config):
+    errs = [_rel(r, m) for r, m in _rows(config)]
+    assert max(errs) < 0.10, [f"{r[0]} {100 * e:.1f} %" for (r, _), e in zip(_rows(config), errs) if e >= 0.10]
+
+
+def test_held_out_summary():
+    rows = [(c, r, m) for c in ("4", "5", "6", "7", "8", "9", "3457", "68") for r, m in _rows(c)]
+    errs = np.array([_rel(r, m) for _, r, m in rows])
+    # Measured over the 130 held-out rows: median 1.9 %, 91 % within 5 %, all within 10 %.
+    assert np.median(errs) < 0.025 and np.mean(errs < 0.05) > 0.85
+    # Positions: 56 of 130 within one grid step; 77 within a step or where the printed position is within
+    # 1 % of the model's extreme (the load is flat there).
+    assert sum(_near(r, m) for _, r, m in rows) >= 50
+    assert sum(_near(r, m) or _flat(c, r, m) for c, r, m in rows) >= 75
+
+
+def test_shipped_cell_curves_are_the_printed_ones():
+    cfg = read_loads(LOADS)
+    for case in cfg.cases:
+        up, lo, psi0 = CELL_CURVES[case.name]
+        for curve, printed in ((case.upper, up), (case.lower, lo)):
+            np.testing.assert_allclose(np.array(curve.deflection) / FT, [d for d, _ in printed], rtol=1e-12, atol=1e-12)
+            np.testing.assert_allclose(np.array(curve.force) / LBF, [f for _, f in printed], rtol=1e-12)
+        assert np.degrees(case.psi_initial) == pytest.approx(psi0)
+
+
+def test_fig_10_peg_leg_ratio_and_the_recorded_conflicts():
+    g = read_loads(LOADS).cases[0].geometry
+    ratio = lambda a: lower_lever(g, a) / (g.AS * np.sin(a) + g.AL * np.cos(a))   # Fig. 10, lower curve
+    # RECORDED: Fig. 10 starts at 0.35, but at alpha = 0 the ratio is AS/AL = 8/25 = 0.32 for any cell
+    # attachment (the lever about the ring edge is AS, the tip lever AL).
+    assert ratio(0.0) == pytest.approx(8 / 25, rel=1e-12)
+    a = np.radians(np.arange(0, 46))
+    r = ratio(a)
+    assert r.min() < r[0] and r.min() < r[-1]                  # dips and recovers, as Fig. 10 shows
+    assert abs(r[-1] - 0.35) < 0.035                           # 0.320 at 45 deg against the printed 0.35
+    # RECORDED: the tables and Fig. 10's upper curve disagree. Fig. 10's 0.40 at +30 deg means
+    # sin(eta - psi) = 0.346 there, which at (2, 0, +30) makes dR11/dAF1 = 0.477; Tables 14 and 17 (upper
+    # cell 36,000 and 72,000 lbf) differ in R11 by 61,909 - 48,759 = 13,150 lbf: dR11/dAF1 = 0.365. The
+    # geometry fitted to all of Table 14 settles lower still, 0.310, and its parallelogram ratio
+    # sin(eta - psi)/cos(psi) is 0.294 at -30 deg and 0.260 at +30 deg against the printed 0.55 and 0.40.
+    r1 = reactions(g, np.radians(2), 0.0, np.radians(30), 36_000 * LBF, 30_000 * LBF)
+    r2 = reactions(g, np.radians(2), 0.0, np.radians(30), 72_000 * LBF, 30_000 * LBF)
+    assert (r2.R11 - r1.R11) / (36_000 * LBF) == pytest.approx(0.310, abs=0.005)
+    par = lambda p: upper_lever(g, np.radians(p)) / np.cos(np.radians(p))
+    assert par(-30) == pytest.approx(0.294, abs=0.005) and par(30) == pytest.approx(0.260, abs=0.005)
