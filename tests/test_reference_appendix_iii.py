@@ -122,3 +122,29 @@ def test_fig_10_peg_leg_ratio_and_the_recorded_conflicts():
     assert (r2.R11 - r1.R11) / (36_000 * LBF) == pytest.approx(0.310, abs=0.005)
     par = lambda p: upper_lever(g, np.radians(p)) / np.cos(np.radians(p))
     assert par(-30) == pytest.approx(0.294, abs=0.005) and par(30) == pytest.approx(0.260, abs=0.005)
+
+
+def test_fig_10_parallelogram_alone_is_reachable_but_contradicts_the_tables():
+    # Fig. 10's upper curve by itself is reachable: refitting only the upper cell's attachments (AA, AB,
+    # AG, AH, PHI) gives 0.55 at -30 deg and 0.40 at +30 deg within 0.02. But that cell strokes 1.22 ft
+    # from psi -15 to +30, past configuration 3's 0.97 ft plateau, so its cell would bottom (72,000 lbf)
+    # before +30 deg, while Tables 14 and 15 print the same +30 deg loads (R11 48,759) as for a cell still
+    # crushing at 36,000 lbf. Hence the shipped geometry follows the tables (docs/articulated-geometry.md).
+    from dataclasses import replace
+    from scipy.optimize import least_squares
+    from sim.articulated_cells import upper_deflection
+    g0 = read_loads(LOADS).cases[0].geometry
+    IN = 0.0254
+
+    def geo(x):
+        return replace(g0, AA=x[0] * IN, AB=x[1] * IN, AG=x[2] * IN, AH=x[3] * IN, PHI=np.radians(x[4]))
+
+    def par(g, p):
+        return upper_lever(g, np.radians(p)) / np.cos(np.radians(p))
+
+    fit = least_squares(lambda x: [par(geo(x), -30) - 0.55, par(geo(x), 30) - 0.40], [1, 1, 1, 1, 0],
+                        bounds=([0, 0, 0, 0, -60], [30, 30, 30, 30, 60]))
+    g = geo(fit.x)
+    assert abs(par(g, -30) - 0.55) < 0.02 and abs(par(g, 30) - 0.40) < 0.02
+    assert upper_deflection(g, np.radians(30), np.radians(-15)) / FT > 0.97
+    assert upper_deflection(g0, np.radians(30), np.radians(-15)) / FT < 0.97      # shipped: 0.75 ft
