@@ -1,0 +1,91 @@
+"""Rigid-body kinematics and dynamics of the capsule (AFFDL-TR-66-33 Sec. V.B-D, V.G).
+
+Attitude is a unit quaternion q = (w, x, y, z) taking principal-axis (eta) components to terrain (epsilon)
+components, so no attitude is singular (the report's roll-yaw-pitch rates, eq. 9-11, are singular at yaw
+90 deg). Euler's equations (eq. 6-8) in principal axes; free flight of an axisymmetric body in closed form
+(the symmetric top of eq. 62-88) as a rotation about the fixed angular-momentum axis composed with a
+rotation about the symmetry axis.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+
+def quat_matrix(q: np.ndarray) -> np.ndarray:
+    """Rotation matrix of a unit quaternion (body -> terrain)."""
+    w, x, y, z = q
+    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+                     [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+                     [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+
+
+def matrix_quat(m: np.ndarray) -> np.ndarray:
+    """Unit quaternion (w >= 0) of a rotation matrix (Shepperd's method: well conditioned everywhere)."""
+    tr = np.trace(m)
+    cand = np.array([tr, m[0, 0], m[1, 1], m[2, 2]])
+    i = int(np.argmax(cand))
+    if i == 0:
+        w = 0.5 * np.sqrt(1 + tr)
+        q = np.array([w, (m[2, 1] - m[1, 2]) / (4 * w), (m[0, 2] - m[2, 0]) / (4 * w), (m[1, 0] - m[0, 1]) / (4 * w)])
+    else:
+        j, k = (i % 3) + 1, ((i + 1) % 3) + 1
+        a, b, c = i - 1, j - 1, k - 1
+        s = 0.5 * np.sqrt(1 + m[a, a] - m[b, b] - m[c, c])
+        q = np.empty(4)
+        q[i] = s
+        q[0] = (m[c, b] - m[b, c]) / (4 * s)
+        q[j] = (m[b, a] + m[a, b]) / (4 * s)
+        q[k] = (m[c, a] + m[a, c]) / (4 * s)
+    return q if q[0] >= 0 else -q
+
+
+def quat_rate(q: np.ndarray, omega: np.ndarray) -> np.ndarray:
+    """dq/dt = q (x) (0, omega) / 2 with omega in body axes."""
+    w, x, y, z = q
+    p, r, s = omega
+    return 0.5 * np.array([-x * p - y * r - z * s, w * p + y * s - z * r, w * r + z * p - x * s, w * s + x * r - y * p])
+
+
+def euler_rates(inertia: np.ndarray, omega: np.ndarray, moment: np.ndarray) -> np.ndarray:
+    """Angular acceleration in principal axes: I w' = M - w x (I w) (eq. 6-8)."""
+    return (moment - np.cross(omega, inertia * omega)) / inertia
+
+
+def axis_rotation(axis: np.ndarray, angle: float) -> np.ndarray:
+    """Rotation matrix about a unit axis (Rodrigues)."""
+    k = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
+    return np.eye(3) + np.sin(angle) * k + (1 - np.cos(angle)) * (k @ k)
+
+
+def free_flight(r0, v0, q0, omega0, inertia, gravity, t):
+    """Closed-form free flight of a body with inertia (A, A, C) after time t: (r, v, q, omega).
+
+    Translation is a parabola; with H = R I omega fixed in space, R(t) = Rot(H/|H|, |H| t / A) R0
+    Rot(e3, (A - C) omega3 t / A), and the body rates keep omega3 and turn (omega1, omega2) at (C - A)
+    omega3 / A.
+    """
+    a, b, c = inertia
+    if abs(a - b) > 1e-12 * max(a, b):
+        raise ValueError("closed-form free flight needs an axisymmetric body (A = B)")
+    r = r0 + v0 * t + 0.5 * gravity * t * t
+    v = v0 + gravity * t
+    R0 = quat_matrix(q0)
+    h = R0 @ (inertia * omega0)
+    hn = np.linalg.norm(h)
+    spin = (a - c) * omega0[2] / a
+    space = axis_rotation(h / hn, hn * t / a) if hn > 0 else np.eye(3)
+    R = space @ R0 @ axis_rotation(np.array([0.0, 0.0, 1.0]), spin * t)
+    lam = -spin * t                      # body rates turn opposite the relative spin
+    cl, sl = np.cos(lam), np.sin(lam)
+    omega = np.array([cl * omega0[0] - sl * omega0[1], sl * omega0[0] + cl * omega0[1], omega0[2]])
+    return r, v, matrix_quat(R), omega
+
+
+def roll_yaw_pitch(m: np.ndarray) -> tuple[float, float, float]:
+    """(roll, yaw, pitch) of a body -> terrain matrix for the 3-2-1 sequence m = R3(pitch) R2(yaw) R1(roll)
+    (angles about the 1, 2, 3 axes; eq. 2 as FUNEV writes LKX)."""
+    yaw = float(np.arcsin(np.clip(-m[2, 0], -1.0, 1.0)))
+    roll = float(np.arctan2(m[2, 1], m[2, 2]))
+    pitch = float(np.arctan2(m[1, 0], m[0, 0]))
+    return roll, yaw, pitch
