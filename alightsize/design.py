@@ -110,11 +110,11 @@ def governing_cases(cfg: DesignConfig) -> list[str]:
 
 def _loads_files(res: DesignResult, out: Path) -> list[Path]:
     """The envelopes' workbook, and heat maps of the governing configurations, beside the design report."""
-    from .loads_output import heatmap, safe_name, write_workbook as write_loads_workbook
+    from .loads_output import heatmap, write_workbook as write_loads_workbook
     loads, system = res.config.loads, res.config.units
     if loads is None:
         return []
     files = [write_atomic(out / "max_member_loads.xlsx", lambda p: write_loads_workbook(loads, p, system))]
     for name in governing_cases(res.config):
-        files.append(write_atomic(out / f"heatmap_{safe_name(name)}.png", lambda p, n=name: heatmap(loads, n, p, system)))
+        files.append(write_atomic(out / f"heatmap_{name}.png", lambda p, n=name: heatmap(loads, n, p, system)))
     return files

@@ -24,8 +24,11 @@ SENSES = ("tension", "compression", "magnitude")
 class LoadsResult:
     config: LoadsConfig
     envelopes: dict[str, tuple[MemberEnvelope, ...]]     # configurations in file order, then combinations
-    combined: dict[str, tuple[str, ...]]
     telescoping: dict[str, float] | None                 # App. III free body, SI
+
+    @property
+    def combined(self) -> dict[str, tuple[str, ...]]:
+        return dict(self.config.combined)
 
 
 def run_loads(cfg: LoadsConfig) -> LoadsResult:
@@ -39,7 +42,7 @@ def run_loads(cfg: LoadsConfig) -> LoadsResult:
     for name, members in cfg.combined:
         env[name] = combine([env[m] for m in members])
     tele = free_body(cfg.telescoping) if cfg.telescoping else None
-    return LoadsResult(cfg, env, dict(cfg.combined), tele)
+    return LoadsResult(cfg, env, tele)
 
 
 def _extreme_json(e: Extreme | None, key: str, combined: bool) -> dict:
@@ -105,8 +108,6 @@ def _resolve(res: LoadsResult, node: Node, name: str, ref: dict) -> float:
             raise sub.error("sense", f"a sense in which {member} is loaded in envelope {env!r}", repr(sense))
         extreme = max(cands, key=lambda e: abs(e.value))
         value = abs(extreme.value) * factor
-    if value <= 0:
-        raise sub.error("member", "a member carrying load", f"{member} = 0")
     node.context.setdefault("load_references", []).append(
         LoadReference(node.key(name), env, member, sense, factor, value, extreme))
     return value

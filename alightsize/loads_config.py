@@ -3,6 +3,7 @@ envelopes and the telescoping free body. Read and validated at the boundary; eve
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, replace
 from math import radians
 from pathlib import Path
@@ -17,6 +18,7 @@ from .config import Node, load_toml
 from .load_envelopes import Grid, LegCase, default_grid
 from .telescoping_loads import TelescopingLeg
 
+NAME = re.compile(r"[A-Za-z0-9_.-]{1,31}")     # used in file and sheet names
 LENGTHS = ("AU", "AD", "AS", "AL", "AO", "AE", "AA", "AB", "AG", "AH", "AP", "AQ")
 POSITIVE = ("AU", "AD", "AS", "AL")
 
@@ -105,13 +107,20 @@ def _grid(node: Node | None) -> Grid:
     return Grid(alpha, beta, step, bottomed == "include")
 
 
+def _name(node: Node) -> str:
+    name = node.string("name")
+    if not NAME.fullmatch(name):
+        raise node.error("name", "1-31 letters, digits, '_', '.' or '-' (it names files and sheets)", repr(name))
+    return name
+
+
 def _case(node: Node, geometry: ArticulatedGeometry | None, truss: TrussAngles | None, where: Node) -> LegCase:
     node.allow(("name", "note", "psi_initial", "psi_final", "upper", "lower", "length_scale",
                 "return_spring_rate", "return_spring_preload"))
     if geometry is None or truss is None:
         raise where.error("geometry" if geometry is None else "truss", "a [geometry] and a [truss] table for the "
                           "articulated configurations", "none")
-    name = node.string("name")
+    name = _name(node)
     node.string("note", "")
     p0 = node.quantity("psi_initial", "angle", positive=False)
     p1 = node.quantity("psi_final", "angle", positive=False)
@@ -120,9 +129,10 @@ def _case(node: Node, geometry: ArticulatedGeometry | None, truss: TrussAngles |
                          f"{np.degrees(p0):g} and {np.degrees(p1):g} deg")
     scale = node.number("length_scale", 1.0)
     g = replace(geometry, **{k: scale * getattr(geometry, k) for k in LENGTHS})
-    if node.has("return_spring_rate") or node.has("return_spring_preload"):
-        g = replace(g, SPRG=node.quantity("return_spring_rate", "spring_rate", default=0.0, positive=False),
-                    PLD=node.quantity("return_spring_preload", "force", default=0.0, positive=False))
+    g = replace(g, SPRG=node.quantity("return_spring_rate", "spring_rate", default=g.SPRG, positive=False),
+                PLD=node.quantity("return_spring_preload", "force", default=g.PLD, positive=False))
+    if g.SPRG < 0 or g.PLD < 0:
+        raise node.error("return_spring_rate", "a return spring rate and preload of 0 or more", f"{g.SPRG}, {g.PLD}")
     upper, lower = _curve(node.table("upper")), _curve(node.table("lower"))
     node.finish()
     return LegCase(name, g, truss, upper, lower, p0, p1)
@@ -166,7 +176,7 @@ def read_loads(path: str | Path) -> LoadsConfig:
     combined = []
     for n in root.tables("combined", optional=True):
         n.allow(("name", "configurations", "note"))
-        name, members = n.string("name"), n.strings("configurations")
+        name, members = _name(n), n.strings("configurations")
         n.string("note", "")
         n.finish()
         missing = [m for m in members if m not in names]

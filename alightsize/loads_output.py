@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import json
-import re
 from math import degrees
 from pathlib import Path
 
@@ -31,11 +30,6 @@ def label(member: str) -> str:
     return LABELS.get(member, member)
 
 
-def safe_name(name: str) -> str:
-    """A configuration name made safe for a file name."""
-    return re.sub(r"[^A-Za-z0-9_.-]", "_", name) or "_"
-
-
 def _row(e: Extreme | None, system: str, with_config: bool) -> dict | None:
     if e is None:
         return None
@@ -61,19 +55,16 @@ def tables(res: LoadsResult, system: str) -> list[dict]:
 def telescoping_rows(res: LoadsResult, system: str) -> list[dict]:
     if res.telescoping is None:
         return []
-    t = res.telescoping
-    rows = [{"name": k, "value": fmt(t[k], "force", system)} for k in ("P1", "P2")]
-    rows += [{"name": k, "value": fmt(t[k], "spring_rate", system)} for k in ("w2", "w1")]
-    rows += [{"name": k, "value": fmt(t[k], "force", system)} for k in ("P4", "P3")]
-    return rows
+    dims = {"P1": "force", "P2": "force", "w2": "spring_rate", "w1": "spring_rate", "P4": "force", "P3": "force"}
+    return [{"name": k, "value": fmt(res.telescoping[k], d, system), "number": to_display(res.telescoping[k], d, system),
+             "unit": unit_label(d, system)} for k, d in dims.items()]     # w: force per length (spring_rate units)
 
 
 def context(res: LoadsResult, system: str, heatmaps: list[str] | None = None) -> dict:
     """Template context; `heatmaps` names the configurations whose heat maps are shown (default all)."""
     names = [c.name for c in res.config.cases] if heatmaps is None else heatmaps
     return {"tables": tables(res, system), "telescoping": telescoping_rows(res, system),
-            "heatmaps": [f"heatmap_{safe_name(n)}.png" for n in names],
-            "grid": {c.name: res.config.grid.size(c.psi_initial, c.psi_final) for c in res.config.cases}}
+            "heatmaps": [f"heatmap_{n}.png" for n in names]}
 
 
 def write_workbook(res: LoadsResult, path: Path, system: str) -> None:
@@ -83,7 +74,7 @@ def write_workbook(res: LoadsResult, path: Path, system: str) -> None:
     wb.remove(wb.active)
     unit = unit_label("force", system)
     for t in tables(res, system):
-        ws = wb.create_sheet(safe_name(t["name"])[:31])
+        ws = wb.create_sheet(t["name"])
         ws.append([t["title"]])
         ws["A1"].font = Font(bold=True)
         ws.append(["Member", f"Load ({unit})", "alpha (deg)", "beta (deg)", "psi (deg)"]
@@ -102,10 +93,9 @@ def write_workbook(res: LoadsResult, path: Path, system: str) -> None:
     if res.telescoping is not None:
         ws = wb.create_sheet("telescoping")
         ws.append(["Telescoping leg free body (App. III)"])
+        ws.append(["Load", "Value", "Unit"])
         for r in telescoping_rows(res, system):
-            ws.append([r["name"], r["value"]])
-            for c in ws[ws.max_row]:
-                c.data_type = "s"
+            ws.append([r["name"], round(r["number"], 3), r["unit"]])
     wb.save(path)
 
 
@@ -117,9 +107,9 @@ def heatmap(res: LoadsResult, case_name: str, path: Path, system: str) -> None:
     a, b = np.degrees(alpha), np.degrees(beta)
     extent = (a[0], a[-1], b[0], b[-1])
     for ax, m in zip(axes.flat, MEMBERS):
-        f = to_display(np.asarray(fields[m]), "force", system)
-        k = int(np.unravel_index(np.argmax(np.abs(f)), f.shape)[0])
-        lim = float(np.max(np.abs(f[k]))) or 1.0
+        f = to_display(np.asarray(fields[m]), "force", system)      # NaN where a cell has bottomed
+        k = int(np.unravel_index(np.nanargmax(np.abs(f)), f.shape)[0])
+        lim = float(np.nanmax(np.abs(f[k]))) or 1.0
         im = ax.imshow(f[k].T, origin="lower", extent=extent, aspect="auto", cmap="RdBu_r", vmin=-lim, vmax=lim,
                        interpolation="nearest")
         ax.set_title(f"{label(m)} at psi = {np.degrees(psi[k]):+.0f} deg", fontsize=9)
@@ -142,7 +132,7 @@ def write_loads(res: LoadsResult, out: Path, system: str | None = None) -> list[
     files = [write_atomic(out / "max_member_loads.json", json.dumps(loads_json(res), indent=2, allow_nan=False) + "\n"),
              write_atomic(out / "max_member_loads.xlsx", lambda p: write_workbook(res, p, system))]
     for c in res.config.cases:
-        files.append(write_atomic(out / f"heatmap_{safe_name(c.name)}.png", lambda p, n=c.name: heatmap(res, n, p, system)))
+        files.append(write_atomic(out / f"heatmap_{c.name}.png", lambda p, n=c.name: heatmap(res, n, p, system)))
     files.append(write_atomic(out / "loads.md", render_loads(res, system, "md")))
     files.append(write_atomic(out / "loads.html", render_loads(res, system, "html")))
     return files

@@ -77,7 +77,7 @@ def test_design_follows_a_changed_cell_force(tmp_path):
     before = json.loads((tmp_path / "before" / "summary.json").read_text())
     after = json.loads((tmp_path / "after" / "summary.json").read_text())
     p0, p1 = _upper_truss_load(before), _upper_truss_load(after)
-    assert p1 > 1.05 * p0            # PU1 grows with the upper cell force (not exactly 20 %: AF2 also loads it)
+    assert p1 > p0                   # PU1 grows with the upper cell force (not by 20 %: AF2 also loads it)
     env = after["loads"]["configurations"]["3457"]
     pu1 = next(r for r in env if r["member"] == "PU1")
     assert pu1["compression_configuration"] == "3" and -pu1["compression_N"] == pytest.approx(p1, rel=1e-12)
@@ -105,6 +105,7 @@ def test_bad_envelope_reference_exits_2(tmp_path, edit, key):
     ('psi_final = "30 deg"', 'psi_final = "-30 deg"', "configuration[0].psi_final"),
     ('configurations = ["3", "4", "5", "7"]', 'configurations = ["3", "11"]', "combined[0].configurations"),
     ('theta = ', 'thetta = ', "truss.thetta"),
+    ('name = "3"', 'name = "3/../x"', "configuration[0].name"),
 ])
 def test_bad_loads_config_exits_2(tmp_path, old, new, key):
     ex = _copy_examples(tmp_path)
