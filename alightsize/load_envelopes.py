@@ -69,33 +69,43 @@ class MemberEnvelope:
     compression: Extreme | None
 
 
+def _cells(case: LegCase, alpha, psi):
+    """(AF1, AF2, stroking): cell forces from the loading curves (return spring added to AF2, FORCE) and
+    whether neither cell has passed the end of its crushing plateau; each deflection computed once."""
+    g = case.geometry
+    d1 = upper_deflection(g, psi, case.psi_initial)
+    d2 = lower_deflection(g, alpha)
+    af1 = case.upper.loading_force(d1)
+    af2 = case.lower.loading_force(d2) + return_spring_force(g, d2)
+    stroking = (d1 <= case.upper.bottoming * (1 + 1e-12)) & (d2 <= case.lower.bottoming * (1 + 1e-12))
+    return af1, af2, stroking
+
+
 def cell_forces(case: LegCase, alpha, psi):
-    """(AF1, AF2) at the given positions from the loading curves (return spring added to AF2, FORCE)."""
-    g = case.geometry
-    af1 = case.upper.loading_force(upper_deflection(g, psi, case.psi_initial))
-    af2 = case.lower.loading_force(lower_deflection(g, alpha)) + return_spring_force(g, alpha)
-    return af1, af2
-
-
-def stroking(case: LegCase, alpha, psi):
-    """True where neither cell has passed the end of its crushing plateau."""
-    g = case.geometry
-    return (upper_deflection(g, psi, case.psi_initial) <= case.upper.bottoming * (1 + 1e-12)) \
-        & (lower_deflection(g, alpha) <= case.lower.bottoming * (1 + 1e-12))
+    """(AF1, AF2) at the given positions from the loading curves."""
+    return _cells(case, alpha, psi)[:2]
 
 
 def member_fields(case: LegCase, grid: Grid):
     """(psi, alpha, beta) axes and every member's load over them, arrays shaped (n_psi, n_alpha, n_beta);
-    NaN at positions left out (a cell bottomed, unless the grid includes them)."""
+    NaN at positions left out (a cell bottomed, unless the grid includes them). ValueError when no position
+    is left, or a member is not finite at one that is."""
     psi = grid.psi(case.psi_initial, case.psi_final)
     alpha, beta = np.asarray(grid.alpha), np.asarray(grid.beta)
     P, A, B = psi[:, None, None], alpha[None, :, None], beta[None, None, :]
-    af1, af2 = cell_forces(case, A, P)
-    r = reactions(case.geometry, A, B, P, af1, af2)
-    loads = member_loads(r, case.truss)
+    af1, af2, stroking = _cells(case, A, P)
+    loads = member_loads(reactions(case.geometry, A, B, P, af1, af2), case.truss)
     shape = (len(psi), len(alpha), len(beta))
-    keep = np.ones(shape, bool) if grid.include_bottomed else np.broadcast_to(stroking(case, A, P), shape)
-    return (psi, alpha, beta), {m: np.where(keep, np.broadcast_to(loads[m], shape), np.nan) for m in MEMBERS}
+    keep = np.ones(shape, bool) if grid.include_bottomed else np.broadcast_to(stroking, shape)
+    if not keep.any():
+        raise ValueError(f"no grid position of configuration {case.name!r} has both cells on their crushing plateau")
+    fields = {}
+    for m in MEMBERS:
+        f = np.broadcast_to(loads[m], shape)
+        if not np.all(np.isfinite(f[keep])):
+            raise ValueError(f"member {m} is not finite somewhere on the grid of configuration {case.name!r}")
+        fields[m] = np.where(keep, f, np.nan)
+    return (psi, alpha, beta), fields
 
 
 def _extreme(field: np.ndarray, axes, pick, config: str) -> Extreme:
@@ -107,21 +117,10 @@ def _extreme(field: np.ndarray, axes, pick, config: str) -> Extreme:
 def envelope(case: LegCase, grid: Grid) -> tuple[MemberEnvelope, ...]:
     """Each member's maximum tension (> 0) and compression (< 0) over the grid, with positions."""
     axes, fields = member_fields(case, grid)
-    psi, alpha, _ = axes
-    keep = grid.include_bottomed or stroking(case, alpha[None, :], psi[:, None])
-    if not np.any(keep):
-        raise ValueError(f"no grid position of configuration {case.name!r} has both cells on their crushing plateau")
-    out = []
-    for m in MEMBERS:
-        f = fields[m]
-        if np.any(np.isinf(f)) or np.any(np.isnan(f[np.broadcast_to(np.asarray(keep)[..., None], f.shape)])):
-            raise ValueError(f"member {m} is not finite somewhere on the grid of configuration {case.name!r}")
-        hi, lo = np.nanmax(f), np.nanmin(f)
-        out.append(MemberEnvelope(
-            m,
-            _extreme(f, axes, np.nanargmax, case.name) if hi > 0 else None,
-            _extreme(f, axes, np.nanargmin, case.name) if lo < 0 else None))
-    return tuple(out)
+    return tuple(MemberEnvelope(m,
+                                _extreme(f, axes, np.nanargmax, case.name) if np.nanmax(f) > 0 else None,
+                                _extreme(f, axes, np.nanargmin, case.name) if np.nanmin(f) < 0 else None)
+                 for m, f in fields.items())
 
 
 def combine(envelopes: list[tuple[MemberEnvelope, ...]]) -> tuple[MemberEnvelope, ...]:

@@ -70,6 +70,7 @@ def lower_lever(g: ArticulatedGeometry, alpha):
     return (c16 * g.AP + c30 * g.AS) / np.hypot(h, v)
 
 
-def return_spring_force(g: ArticulatedGeometry, alpha):
-    """The light peg-leg return spring, SPRG * Delta_2 + PLD, added to the lower cell force (FORCE)."""
-    return g.SPRG * lower_deflection(g, alpha) + g.PLD
+def return_spring_force(g: ArticulatedGeometry, delta2):
+    """The light peg-leg return spring at lower-cell deflection delta2, SPRG * Delta_2 + PLD, added to the
+    lower cell force (FORCE)."""
+    return g.SPRG * delta2 + g.PLD
