@@ -13,6 +13,7 @@ integrator never leave memory behind. Scalars in, scalars out: the functions com
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -36,8 +37,9 @@ class CellModel:
         if self.c < 0 or self.factor <= 0:
             raise ValueError("damping must be >= 0 and the force factor > 0")
 
+    @cached_property
     def arrays(self):
-        """(deflections, forces x factor, k, c, yield force or -1): the numba-friendly form."""
+        """(deflections, forces x factor, k, c, yield force or -1): the numba-friendly form, built once."""
         return (np.asarray(self.curve.deflection, float), self.factor * np.asarray(self.curve.force, float),
                 self.k, self.c, -1.0 if self.yield_force is None else self.yield_force)
 

@@ -15,7 +15,7 @@ import numpy as np
 
 from . import crush_cell
 from .rigid_body import euler_rates, quat_matrix, quat_rate
-from .telescoping_leg import TelescopingLeg, free_footpad, leg_load
+from .telescoping_leg import TelescopingLeg, axial_deflection, axial_set, free_footpad, leg_load
 
 # Dormand-Prince 5(4) tableau.
 _C = np.array([0, 1 / 5, 3 / 10, 4 / 5, 8 / 9, 1, 1])
@@ -118,9 +118,7 @@ def _events(scene: Scene, states: list[LegState], y: np.ndarray, raw: bool = Fal
     out = np.empty(len(scene.legs))
     for i, (leg, st) in enumerate(zip(scene.legs, states)):
         if st.contact:
-            ld = leg_load(leg, st.memory, st.P, r, R, y[3:6], y[10:13])
-            dd, ff, k, c, yf = leg.axial.arrays()
-            out[i] = ld.deflections[0] - crush_cell.permanent_set(k, st.memory[0, 0], st.memory[0, 1])
+            out[i] = axial_deflection(leg, st.P, r, R) - axial_set(leg, st.memory)
         else:
             out[i] = free_footpad(leg, st.memory, st.tilt, r, R)[2]
         if not (raw or st.armed):
@@ -153,7 +151,8 @@ def initial_state(scene: Scene) -> tuple[np.ndarray, list[LegState]]:
     return y0, states
 
 
-def _commit(scene: Scene, states: list[LegState], y: np.ndarray) -> None:
+def _commit(scene: Scene, states: list[LegState], y: np.ndarray) -> list:
+    """Arm legs clear of their last switch and update cell memory at an accepted state; the leg loads there."""
     for st, g in zip(states, _events(scene, states, y, raw=True)):
         st.armed = st.armed or g > ARM
     R, loads = _loads(scene, states, y)
@@ -161,8 +160,9 @@ def _commit(scene: Scene, states: list[LegState], y: np.ndarray) -> None:
         if ld is None:
             continue
         for j, cell in enumerate(leg.cells):
-            dd, ff, k, c, yf = cell.arrays()
+            dd, ff, k, c, yf = cell.arrays
             st.memory[j] = crush_cell.commit(dd, ff, yf, st.memory[j, 0], st.memory[j, 1], ld.deflections[j])
+    return loads
 
 
 def _switch(scene: Scene, states: list[LegState], y: np.ndarray, which: int) -> None:
@@ -183,8 +183,8 @@ def energy(scene: Scene, y: np.ndarray) -> tuple[float, float]:
     return float(ke), float(-scene.mass * scene.gravity @ y[0:3])
 
 
-def simulate(scene: Scene, ctl: Controls, stop=None) -> Result:
-    """Integrate from first contact to ctl.t_final (or until stop(t, y, states) returns a reason)."""
+def simulate(scene: Scene, ctl: Controls) -> Result:
+    """Integrate from first contact to ctl.t_final."""
     y, states = initial_state(scene)
     t, h = 0.0, ctl.fixed_step or min(1e-4, ctl.max_step)
     ts, ys = [t], [y.copy()]
@@ -212,7 +212,7 @@ def simulate(scene: Scene, ctl: Controls, stop=None) -> Result:
             lo, hi = 0.0, h
             while hi - lo > ctl.event_tol:
                 mid = 0.5 * (lo + hi)
-                ym, _, _ = _step(scene, states, y, mid, k1)
+                ym = _step(scene, states, y, mid, k1)[0]
                 nrhs += 6
                 gm = _events(scene, states, ym)
                 if np.any((g_prev > 0) & (gm <= 0)):
@@ -229,14 +229,15 @@ def simulate(scene: Scene, ctl: Controls, stop=None) -> Result:
         y = y1
         y[6:10] /= np.linalg.norm(y[6:10])
         steps += 1
-        _commit(scene, states, y)
-        if which is not None:
+        loads = _commit(scene, states, y)
+        if which is None:
+            k1 = k7                                   # first same as last: memory updates keep the force
+        else:
             _switch(scene, states, y, which)
-        k1 = rhs(scene, states, y)
-        nrhs += 1
+            k1 = rhs(scene, states, y)
+            nrhs += 1
         g_prev = _events(scene, states, y)
-        R, loads = _loads(scene, states, y)
-        for i, ld in enumerate(loads):
+        for i, ld in enumerate(loads):              # as committed (a switching leg shows its pre-switch state)
             defl[i].append(ld.deflections if ld is not None else np.full(len(scene.legs[i].cells), np.nan))
             frc[i].append(ld.forces if ld is not None else np.zeros(len(scene.legs[i].cells)))
         ts.append(t)
@@ -246,8 +247,6 @@ def simulate(scene: Scene, ctl: Controls, stop=None) -> Result:
             h = min(ctl.max_step, h * min(5.0, 0.9 * max(e, 1e-10) ** -0.2))
         elif ctl.fixed_step is not None:
             h = ctl.fixed_step
-        if stop is not None and stop(t, y, states):
-            break
     Y = np.array(ys)
     accel = np.array([quat_matrix(yy[6:10]).T @ (a - scene.gravity) for yy, a in zip(Y, acc)]) / G0
     ke0, pe0 = energy(scene, Y[0])
@@ -255,10 +254,9 @@ def simulate(scene: Scene, ctl: Controls, stop=None) -> Result:
     elastic = 0.0
     for leg, st, dl in zip(scene.legs, states, defl):
         for j, cell in enumerate(leg.cells):
-            dd, ff, k, c, yf = cell.arrays()
             last = dl[-1][j]
             if np.isfinite(last):
-                elastic += crush_cell.elastic_energy(k, st.memory[j, 0], st.memory[j, 1], last)
+                elastic += crush_cell.elastic_energy(cell.k, st.memory[j, 0], st.memory[j, 1], last)
     work = float(Y[-1, 13])
     released = pe0 - pe1
     closure = abs(ke0 + released - (work + ke1)) / (ke0 + max(released, 0.0))

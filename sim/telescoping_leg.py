@@ -82,7 +82,7 @@ def leg_load(leg: TelescopingLeg, memory: np.ndarray, P: np.ndarray, r: np.ndarr
     delta[1:] = leg.pad_lever * tilt * np.cos(g)                     # eq. 21
     rate[1:] = leg.pad_lever * (tilt_rate * np.cos(g) * alpha_dot + tilt * np.sin(g) * beta_dot)
     for j, cell in enumerate(leg.cells):
-        dd, ff, k, c, y = cell.arrays()
+        dd, ff, k, c, y = cell.arrays
         f[j] = crush_cell.force(dd, ff, k, c, y, memory[j, 0], memory[j, 1], delta[j], rate[j])
     pads = f[1:]
     # Generalized pad forces over the footpad's lever arms: Q_alpha / al and Q_beta / (al sin alpha).
@@ -94,11 +94,20 @@ def leg_load(leg: TelescopingLeg, memory: np.ndarray, P: np.ndarray, r: np.ndarr
     return LegLoad(force, p + leg.attach, float((R @ force)[2]), delta, f, float(f @ rate), al, alpha, beta)
 
 
+def axial_set(leg: TelescopingLeg, memory: np.ndarray) -> float:
+    """Permanent set of the axial cell (m)."""
+    return crush_cell.permanent_set(leg.axial.k, memory[0, 0], memory[0, 1])
+
+
+def axial_deflection(leg: TelescopingLeg, P: np.ndarray, r: np.ndarray, R: np.ndarray) -> float:
+    """Delta_1 = rho - al of a leg whose footpad is held at P (eq. 16-17, 20), without the forces."""
+    return leg.rho - float(np.linalg.norm(R.T @ (P - r) - leg.attach))
+
+
 def free_footpad(leg: TelescopingLeg, memory: np.ndarray, tilt: tuple[float, float], r: np.ndarray,
                  R: np.ndarray) -> np.ndarray:
     """Unloaded footpad position in terrain axes (eq. 13-15): length rho less the axial permanent set, at the
     tilt (alpha, beta) the leg had when it last left the ground."""
-    dd, ff, k, c, y = leg.axial.arrays()
-    length = leg.rho - crush_cell.permanent_set(k, memory[0, 0], memory[0, 1])
+    length = leg.rho - axial_set(leg, memory)
     u, _, _ = _frame(*tilt)
     return r + R @ (leg.attach + leg.to_body @ (length * u))

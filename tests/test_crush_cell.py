@@ -13,7 +13,7 @@ K = 5e6
 
 
 def _arrays(**kw):
-    return CellModel(CURVE, K, **kw).arrays()
+    return CellModel(CURVE, K, **kw).arrays
 
 
 def test_loading_follows_the_curve_and_bottoming_continues_or_yields():

@@ -87,4 +87,3 @@ def test_energy_closes_on_an_inclined_landing_with_pads_and_rebound():
     pads = np.concatenate([d[:, 1:] for d in res.deflections])
     assert np.nanmax(pads) > 0.005                           # pads crush: the case exercises eq. 21-27
     assert res.energy["closure_rel"] < 1e-4                  # issue 4 target
-    assert res.energy["absorbed_J"] > 0.5 * res.energy["initial_J"]
