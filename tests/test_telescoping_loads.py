@@ -17,14 +17,14 @@ def test_side_loads_from_the_printed_inputs_and_the_recorded_discrepancy():
     p1, p2 = (x / LBF for x in side_loads(LEG))
     # sqrt(2) 1500 (15 / 30.5) = 1043.3 and sqrt(2) 1500 (1 - 15 / 30.5) = 1078.0 (exact arithmetic).
     assert p1 == pytest.approx(1043.3, abs=0.05) and p2 == pytest.approx(1078.0, abs=0.05)
-    # RECORDED: the report prints P1 = 1045 and P2 = 1075; both follow from sqrt(2) AF2 taken as 2120 lb
-    # and a / rho taken as 0.493 (15 / 30.5 = 0.4918): 2120 x 0.493 = 1045.2, 2120 x 0.507 = 1074.8.
-    assert round(2120 * 0.493) == 1045 and round(2120 * 0.507) == 1075
+    # RECORDED: the report prints P1 = 1045 and P2 = 1075 (0.16 % and 0.28 % off); both follow from
+    # sqrt(2) AF2 taken as 2120 lb and a / rho as 0.493 (docs/report-notes.md).
+    assert round(p1) != 1045 and round(p2) != 1075
     assert p1 + p2 == pytest.approx(np.sqrt(2) * 1500, rel=1e-12)      # statics: P1 + P2 = sqrt(2) AF2
 
 
 def test_sliding_loads_from_the_printed_p1_reach_the_printed_digits():
-    out = {k: v for k, v in sliding_loads(LEG, 1045 * LBF).items()}
+    out = sliding_loads(LEG, 1045 * LBF)
     assert round(out["w2"] / (LBF / IN), -1) == 6070       # 6 (1045)(15.5) / 16 = 6074
     assert round(out["w1"] / (LBF / IN)) == 261             # 1045 / 4 = 261.25
     assert round(out["P4"] / LBF, -1) == 660                # 0.05 [261 (4) + 0.5 (6070)(4)] = 659.6
