@@ -1,36 +1,34 @@
 """One landing of a rigid capsule on telescoping legs (AFFDL-TR-66-33 Sec. V).
 
-State y = (r, v in terrain axes; q body->terrain; omega in principal axes; W the work the legs have done
-on the cells). An embedded Runge-Kutta pair (Dormand-Prince 5(4)) with error control, or fixed steps,
-advances it; leg touchdown and lift-off are located in time by bisection on the step size (to `event_tol`
-seconds), and the cells' memory and contact points change only on accepted steps. Footpads hold where they
-touched (no slip: friction enough); sliding is a later step of issue 4.
+`simulate(scene, controls)` places the capsule so that its lowest footpad touches the terrain at t = 0,
+runs the compiled step loop (`landing_kernel.run`) and, whenever no leg touches an axisymmetric capsule,
+flies it in closed form (eq. 62-88) to the next touchdown instead of integrating. It returns the history at
+every accepted step, the outcome and the energy audit.
 """
 
 from __future__ import annotations
 
+import time
 from dataclasses import dataclass, field
 
 import numpy as np
+from scipy.optimize import brentq
 
 from . import crush_cell
-from .rigid_body import euler_rates, quat_matrix, quat_rate
-from .telescoping_leg import TelescopingLeg, axial_deflection, axial_set, free_footpad, leg_load
+from . import landing_kernel as lk
+from .rigid_body import free_flight, quat_matrix
+from .stability import quiescence_momenta
+from .telescoping_leg import TelescopingLeg, free_footpad, pack
 
-# Dormand-Prince 5(4) tableau.
-_C = np.array([0, 1 / 5, 3 / 10, 4 / 5, 8 / 9, 1, 1])
-_A = [[], [1 / 5], [3 / 40, 9 / 40], [44 / 45, -56 / 15, 32 / 9],
-      [19372 / 6561, -25360 / 2187, 64448 / 6561, -212 / 729],
-      [9017 / 3168, -355 / 33, 46732 / 5247, 49 / 176, -5103 / 18656],
-      [35 / 384, 0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84]]
-_B5 = np.array([35 / 384, 0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84, 0])
-_B4 = np.array([5179 / 57600, 0, 7571 / 16695, 393 / 640, -92097 / 339200, 187 / 2100, 1 / 40])
+G0 = 9.80665
 
 
 @dataclass(frozen=True)
 class Scene:
     """Mass (kg), principal inertias (kg m^2), legs (principal axes), gravity in terrain axes (m/s^2),
-    initial velocity (terrain), attitude quaternion and body rates (principal axes)."""
+    initial velocity (terrain), attitude quaternion (principal -> terrain) and body rates (principal axes),
+    static and dynamic friction, the capsule's up axis and body points (principal axes, from the CG) that
+    must stay clear of the terrain."""
 
     mass: float
     inertia: np.ndarray
@@ -39,228 +37,251 @@ class Scene:
     v0: np.ndarray
     q0: np.ndarray
     omega0: np.ndarray
+    mu_static: float = 1.5e6
+    mu_dynamic: float = 1.0e6
+    up: np.ndarray = field(default_factory=lambda: np.array([0.0, 0.0, 1.0]))
+    body_points: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))
 
 
 @dataclass(frozen=True)
 class Controls:
+    """Run controls: final time, error tolerances or a fixed step, largest step, event location tolerance,
+    critical tip angle (nutation from the vertical), body clearance, quiescence (fraction of the
+    first-contact momentum held for `taus` periods of `period` seconds; off when taus = 0), the time from
+    which the energy criterion of eq. 89-95 may end the run as stable (None: never), whether bottoming ends
+    the run and whether free flight is flown in closed form."""
+
     t_final: float = 1.0
     rtol: float = 1e-6
     atol: float = 1e-9
     fixed_step: float | None = None
     max_step: float = 2e-3
     event_tol: float = 1e-10
-
-
-@dataclass
-class LegState:
-    memory: np.ndarray                 # (n_cells, 2): dmax, fmax
-    contact: bool = False
-    P: np.ndarray = field(default_factory=lambda: np.zeros(3))
-    tilt: tuple[float, float] = (0.0, 0.0)
-    armed: bool = False                # the next switch needs a clear crossing (see _events)
+    tip_angle: float = np.radians(90.0)
+    body_clearance: float = 0.0
+    quiet_fraction: float = 0.025
+    taus: float = 0.0
+    period: float = 0.0
+    energy_check_from: float | None = 0.05
+    stop_on_bottoming: bool = True
+    closed_form_flight: bool = True
+    first_step: float = 1e-4
 
 
 @dataclass
 class Result:
     t: np.ndarray
-    y: np.ndarray                      # (n, 14)
-    deflections: list                  # per leg: (n, n_cells)
-    forces: list
-    accel_g: np.ndarray                # CG acceleration in principal axes, multiples of g0
-    legs: list[LegState]
+    y: np.ndarray                      # (n, 14): r, v, q, omega, W
+    dy: np.ndarray                     # (n, 14) derivatives at the accepted points
+    deflections: np.ndarray            # (n, legs, cells); NaN off the ground
+    forces: np.ndarray                 # (n, legs, cells)
+    leg_force: np.ndarray              # (n, legs, 3) ground force on the capsule, principal axes
+    footpad: np.ndarray                # (n, legs, 3) terrain axes
+    contact: np.ndarray                # (n, legs)
+    status: str
+    reason: str
+    bottomed: tuple | None             # (time, leg, cell) of the first bottoming
+    cell_energy: np.ndarray            # (legs, cells) J
+    friction_energy: np.ndarray        # (legs,) J
+    memory: np.ndarray                 # (legs, cells, 2) final dmax, fmax
     steps: int
     rejected: int
     rhs_evals: int
+    wall_s: float
     energy: dict
 
+    @property
+    def accel_g(self) -> np.ndarray:
+        """CG acceleration less gravity (what an accelerometer reads) in principal axes, multiples of g0."""
+        g = self.dy[:, 3:6] - self._gravity
+        return np.einsum("nji,nj->ni", np.array([quat_matrix(q) for q in self.y[:, 6:10]]), g) / G0
 
-G0 = 9.80665
-
-
-def _loads(scene: Scene, states: list[LegState], y: np.ndarray):
-    r, v, q, w = y[0:3], y[3:6], y[6:10], y[10:13]
-    R = quat_matrix(q / np.linalg.norm(q))
-    out = []
-    for leg, st in zip(scene.legs, states):
-        out.append(leg_load(leg, st.memory, st.P, r, R, v, w) if st.contact else None)
-    return R, out
+    _gravity: np.ndarray = field(default=None, repr=False)
 
 
-def rhs(scene: Scene, states: list[LegState], y: np.ndarray) -> np.ndarray:
-    """dy/dt: eq. 3-5 in terrain axes, Euler's equations in principal axes, quaternion rate, cell power."""
-    R, loads = _loads(scene, states, y)
-    f_body, m_body, power = np.zeros(3), np.zeros(3), 0.0
-    for ld in loads:
-        if ld is not None:
-            f_body += ld.force
-            m_body += np.cross(ld.point, ld.force)
-            power += ld.power
-    dy = np.empty_like(y)
-    dy[0:3] = y[3:6]
-    dy[3:6] = scene.gravity + R @ f_body / scene.mass
-    dy[6:10] = quat_rate(y[6:10], y[10:13])
-    dy[10:13] = euler_rates(scene.inertia, y[10:13], m_body)
-    dy[13] = power
-    return dy
+STATUS = {lk.END: "end", lk.BOTTOMED: "bottomed", lk.TIPPED: "tipped", lk.BODY: "body_contact",
+          lk.QUIET: "quiet", lk.FAILED: "failed", lk.STABLE: "stable"}
 
 
-ARM = 1e-7          # m: a leg's next switch is armed once it is this far from its last one
-BAND = 1e-4         # m: an unarmed leg switches only this far past zero (grazing contact never chatters)
+def axisymmetric(inertia: np.ndarray) -> bool:
+    return abs(inertia[0] - inertia[1]) <= 1e-9 * max(inertia[0], inertia[1])
 
 
-def _events(scene: Scene, states: list[LegState], y: np.ndarray, raw: bool = False) -> np.ndarray:
-    """Per leg: free footpad height (off the ground) or axial compression beyond the set (on the ground);
-    an event is a crossing of zero from above. Right after a switch the leg is unarmed and the threshold
-    sits BAND past zero, so a footpad that grazes the terrain (touches while the leg would extend) stays
-    in contact at zero force until it clearly leaves, instead of switching at every step."""
-    r, q = y[0:3], y[6:10]
-    R = quat_matrix(q / np.linalg.norm(q))
-    out = np.empty(len(scene.legs))
-    for i, (leg, st) in enumerate(zip(scene.legs, states)):
-        if st.contact:
-            out[i] = axial_deflection(leg, st.P, r, R) - axial_set(leg, st.memory)
-        else:
-            out[i] = free_footpad(leg, st.memory, st.tilt, r, R)[2]
-        if not (raw or st.armed):
-            out[i] += BAND
-    return out
+class _Run:
+    """Arrays the compiled loop reads and updates in place."""
+
+    def __init__(self, scene: Scene, ctl: Controls):
+        self.scene, self.ctl = scene, ctl
+        self.geo, self.cells = pack(scene.legs)
+        n, C = self.cells[2].shape
+        self.n, self.C = n, C
+        self.bottoming = np.full((n, C), np.inf)
+        for i, leg in enumerate(scene.legs):
+            for j, cell in enumerate(leg.cells):
+                self.bottoming[i, j] = cell.curve.bottoming
+        self.mu = np.array([scene.mu_static, scene.mu_dynamic])
+        self.mem = np.zeros((n, C, 2))
+        self.contact = np.zeros(n, np.int64)
+        self.P = np.zeros((n, 3))
+        self.sliding = np.zeros(n, np.int64)
+        self.tilt = np.zeros((n, 2))
+        self.armed = np.zeros(n, np.int64)
+        self.energy = np.zeros((n, C + 1))
+        self.last = np.zeros((n, 2 * C + 3))
+        self.work = (np.zeros((n, 3)), np.zeros(n, np.int64), np.zeros((n, C)), np.zeros((n, C)), np.zeros((n, 3)))
+        self.cnt = np.zeros(4, np.int64)
+        self.run_state = np.array([ctl.first_step, 0.0, 0.0, -1.0, -1.0, -1.0])
+        self.ctl_arr = np.array([ctl.t_final, ctl.rtol, ctl.atol, ctl.fixed_step or 0.0, ctl.max_step, ctl.event_tol,
+                                 float(ctl.stop_on_bottoming), np.cos(ctl.tip_angle), ctl.body_clearance,
+                                 float(ctl.closed_form_flight and axisymmetric(scene.inertia)), ctl.quiet_fraction,
+                                 ctl.taus, ctl.period,
+                                 -1.0 if ctl.energy_check_from is None else ctl.energy_check_from])
+        attach = np.array([leg.attach for leg in scene.legs])
+        self.order = np.argsort(np.arctan2(attach[:, 1], attach[:, 0])).astype(np.int64)
+        self._grow(4096)
+
+    def _grow(self, size: int):
+        n, C = self.n, self.C
+        new = dict(H_t=np.zeros(size), H_y=np.zeros((size, 14)), H_dy=np.zeros((size, 14)),
+                   H_d=np.full((size, n, C), np.nan), H_f=np.zeros((size, n, C)), H_X=np.zeros((size, n, 3)),
+                   H_P=np.zeros((size, n, 3)), H_c=np.zeros((size, n), np.int64))
+        k = int(self.cnt[lk.K_HIST])
+        for name, arr in new.items():
+            if k:
+                arr[:k] = getattr(self, name)[:k]
+            setattr(self, name, arr)
+
+    def record(self, t: float, y: np.ndarray, dy: np.ndarray):
+        """A history point outside the compiled loop (start, free flight)."""
+        if self.cnt[lk.K_HIST] >= len(self.H_t):
+            self._grow(2 * len(self.H_t))
+        k = int(self.cnt[lk.K_HIST])
+        self.H_t[k], self.H_y[k], self.H_dy[k] = t, y, dy
+        self.H_P[k], self.H_c[k] = self.P, self.contact
+        Pt, slt, dt, ft, Xt = self.work
+        for i in range(self.n):
+            if self.contact[i]:
+                self.H_d[k, i], self.H_f[k, i], self.H_X[k, i] = dt[i], ft[i], Xt[i]
+            else:
+                self.H_d[k, i], self.H_f[k, i], self.H_X[k, i] = np.nan, 0.0, 0.0
+        self.cnt[lk.K_HIST] = k + 1
+
+    def derivative(self, y: np.ndarray) -> np.ndarray:
+        s = self.scene
+        dy = np.zeros(14)
+        lk.rhs(self.geo, self.cells, s.mass, s.inertia, s.gravity, self.mu, self.mem, self.contact, self.P,
+               self.sliding, y, dy, *self.work)
+        return dy
+
+    def heights(self, r: np.ndarray, R: np.ndarray) -> np.ndarray:
+        return np.array([free_footpad(self.geo, self.cells, i, self.mem[i], self.tilt[i], r, R)[2]
+                         for i in range(self.n)])
+
+    def loop(self, y: np.ndarray, t: float) -> tuple[int, float]:
+        s = self.scene
+        while True:
+            status, t = lk.run(self.geo, self.cells, s.mass, s.inertia, s.gravity, self.mu, self.bottoming, s.up,
+                               s.body_points, self.order, self.mem, self.contact, self.P, self.sliding, self.tilt, self.armed,
+                               self.energy, self.last, y, t, self.ctl_arr, self.cnt, self.run_state, self.H_t,
+                               self.H_y, self.H_dy, self.H_d, self.H_f, self.H_X, self.H_P, self.H_c)
+            if status == lk.BUFFER:
+                self._grow(2 * len(self.H_t))
+            elif status == lk.FLIGHT:
+                t = self.fly(y, t)
+            else:
+                return status, t
+
+    def fly(self, y: np.ndarray, t0: float) -> float:
+        """Closed-form free flight (eq. 62-88) to the next touchdown or the final time; updates y."""
+        s, t_final = self.scene, self.ctl.t_final
+        r0, v0, q0, w0 = y[0:3].copy(), y[3:6].copy(), y[6:10].copy(), y[10:13].copy()
+
+        def state(dt):
+            r, v, q, w = free_flight(r0, v0, q0, w0, s.inertia, s.gravity, dt)
+            return r, v, q, w
+
+        def lowest(dt):
+            r, _, q, _ = state(dt)
+            return float(np.min(self.heights(r, quat_matrix(q))))
+
+        sample = min(1e-3, self.ctl.max_step)
+        dt_lo, dt_hi, found = 0.0, 0.0, False
+        while t0 + dt_hi < t_final:
+            dt_hi = min(dt_lo + sample, t_final - t0)
+            if lowest(dt_hi) <= 0.0:
+                found = True
+                break
+            self.record(t0 + dt_hi, np.concatenate([*state(dt_hi), [y[13]]]), self._flight_dy(state(dt_hi)))
+            dt_lo = dt_hi
+        if found:
+            dt_hi = brentq(lowest, dt_lo, dt_hi, xtol=self.ctl.event_tol, rtol=4 * np.finfo(float).eps)
+        r, v, q, w = state(dt_hi)
+        y[:13] = np.concatenate([r, v, q, w])
+        if found:
+            R = quat_matrix(q)
+            which = int(np.argmin(self.heights(r, R)))
+            lk.switch(self.geo, self.cells, self.mem, self.contact, self.P, self.sliding, self.tilt, self.armed, y,
+                      which, self.last, self.work)
+        self.record(t0 + dt_hi, y.copy(), self.derivative(y))
+        return t0 + dt_hi
+
+    def _flight_dy(self, st) -> np.ndarray:
+        r, v, q, w = st
+        dy = np.zeros(14)
+        dy[0:3], dy[3:6] = v, self.scene.gravity
+        dy[10:13] = np.cross(w, self.scene.inertia * w) / -self.scene.inertia
+        return dy
 
 
-def _step(scene, states, y, h, k1):
-    k = [k1]
-    for i in range(1, 7):
-        yi = y + h * sum(a * kj for a, kj in zip(_A[i], k))
-        k.append(rhs(scene, states, yi))
-    y5 = y + h * sum(b * kj for b, kj in zip(_B5, k))
-    err = h * sum((b5 - b4) * kj for b5, b4, kj in zip(_B5, _B4, k))
-    return y5, err, k[6]
-
-
-def initial_state(scene: Scene) -> tuple[np.ndarray, list[LegState]]:
+def initial_state(scene: Scene, run: _Run) -> np.ndarray:
     """y0 with the CG placed so the lowest footpad touches the terrain at t = 0 (first contact by
-    construction, as FORCE shifts R(3) by XMIN)."""
-    states = [LegState(np.zeros((len(leg.cells), 2))) for leg in scene.legs]
+    construction, as FORCE shifts R(3) by XMIN); the lowest legs touch."""
     R = quat_matrix(scene.q0)
-    heights = [free_footpad(leg, st.memory, st.tilt, np.zeros(3), R)[2] for leg, st in zip(scene.legs, states)]
-    r0 = np.array([0.0, 0.0, -min(heights)])
+    heights = run.heights(np.zeros(3), R)
+    r0 = np.array([0.0, 0.0, -heights.min()])
     y0 = np.concatenate([r0, scene.v0, scene.q0, scene.omega0, [0.0]])
-    for leg, st, h in zip(scene.legs, states, heights):
-        if abs(h - min(heights)) <= 1e-12:
-            st.contact = True
-            st.P = free_footpad(leg, st.memory, st.tilt, r0, R) * np.array([1, 1, 0])
-    return y0, states
+    for i in np.where(heights - heights.min() <= 1e-12)[0]:
+        lk.switch(run.geo, run.cells, run.mem, run.contact, run.P, run.sliding, run.tilt, run.armed, y0, int(i),
+                  run.last, run.work)
+    return y0
 
 
-def _commit(scene: Scene, states: list[LegState], y: np.ndarray) -> list:
-    """Arm legs clear of their last switch and update cell memory at an accepted state; the leg loads there."""
-    for st, g in zip(states, _events(scene, states, y, raw=True)):
-        st.armed = st.armed or g > ARM
-    R, loads = _loads(scene, states, y)
-    for leg, st, ld in zip(scene.legs, states, loads):
-        if ld is None:
-            continue
-        for j, cell in enumerate(leg.cells):
-            dd, ff, k, c, yf = cell.arrays
-            st.memory[j] = crush_cell.commit(dd, ff, yf, st.memory[j, 0], st.memory[j, 1], ld.deflections[j])
-    return loads
-
-
-def _switch(scene: Scene, states: list[LegState], y: np.ndarray, which: int) -> None:
-    st, leg = states[which], scene.legs[which]
-    st.armed = False
-    r, R = y[0:3], quat_matrix(y[6:10] / np.linalg.norm(y[6:10]))
-    if st.contact:                                    # lift-off: remember the tilt for recontact (eq. 13)
-        ld = leg_load(leg, st.memory, st.P, r, R, y[3:6], y[10:13])
-        st.contact, st.tilt = False, (ld.alpha, ld.beta)
-    else:                                             # touchdown: the footpad holds here
-        st.contact, st.P = True, free_footpad(leg, st.memory, st.tilt, r, R) * np.array([1, 1, 0])
-
-
-def energy(scene: Scene, y: np.ndarray) -> tuple[float, float]:
-    """(kinetic, potential relative to r = 0) in J."""
-    R = quat_matrix(y[6:10] / np.linalg.norm(y[6:10]))
-    ke = 0.5 * scene.mass * y[3:6] @ y[3:6] + 0.5 * np.sum(scene.inertia * y[10:13] ** 2)
-    return float(ke), float(-scene.mass * scene.gravity @ y[0:3])
+def kinetic(scene: Scene, y: np.ndarray) -> float:
+    return float(0.5 * scene.mass * y[3:6] @ y[3:6] + 0.5 * np.sum(scene.inertia * y[10:13] ** 2))
 
 
 def simulate(scene: Scene, ctl: Controls) -> Result:
-    """Integrate from first contact to ctl.t_final."""
-    y, states = initial_state(scene)
-    t, h = 0.0, ctl.fixed_step or min(1e-4, ctl.max_step)
-    ts, ys = [t], [y.copy()]
-    k1 = rhs(scene, states, y)
-    nrhs, steps, rejected = 1, 0, 0
-    g_prev = _events(scene, states, y)
-    defl = [[np.zeros(len(leg.cells))] for leg in scene.legs]
-    frc = [[np.zeros(len(leg.cells))] for leg in scene.legs]
-    acc = [k1[3:6]]
-    while t < ctl.t_final - 1e-15:
-        h = min(h, ctl.t_final - t)
-        y1, err, k7 = _step(scene, states, y, h, k1)
-        nrhs += 6
-        if ctl.fixed_step is None:
-            scale = ctl.atol + ctl.rtol * np.maximum(np.abs(y), np.abs(y1))
-            e = float(np.sqrt(np.mean((err / scale) ** 2)))
-            if e > 1.0:
-                rejected += 1
-                h *= max(0.2, 0.9 * e ** -0.2)
-                continue
-        g1 = _events(scene, states, y1)
-        crossed = np.where((g_prev > 0) & (g1 <= 0))[0] if np.any(g1 <= 0) else []
-        which = None
-        if len(crossed):                              # locate the earliest event by bisection on the step
-            lo, hi = 0.0, h
-            while hi - lo > ctl.event_tol:
-                mid = 0.5 * (lo + hi)
-                ym = _step(scene, states, y, mid, k1)[0]
-                nrhs += 6
-                gm = _events(scene, states, ym)
-                if np.any((g_prev > 0) & (gm <= 0)):
-                    hi = mid
-                else:
-                    lo = mid
-            h_acc = hi
-            y1, _, k7 = _step(scene, states, y, h_acc, k1)
-            gh = _events(scene, states, y1)
-            which = int(crossed[np.argmin([abs(gh[i]) for i in crossed])]) if len(crossed) > 1 else int(crossed[0])
-        else:
-            h_acc = h
-        t += h_acc
-        y = y1
-        y[6:10] /= np.linalg.norm(y[6:10])
-        steps += 1
-        loads = _commit(scene, states, y)
-        if which is None:
-            k1 = k7                                   # first same as last: memory updates keep the force
-        else:
-            _switch(scene, states, y, which)
-            k1 = rhs(scene, states, y)
-            nrhs += 1
-        g_prev = _events(scene, states, y)
-        for i, ld in enumerate(loads):              # as committed (a switching leg shows its pre-switch state)
-            defl[i].append(ld.deflections if ld is not None else np.full(len(scene.legs[i].cells), np.nan))
-            frc[i].append(ld.forces if ld is not None else np.zeros(len(scene.legs[i].cells)))
-        ts.append(t)
-        ys.append(y.copy())
-        acc.append(k1[3:6])
-        if ctl.fixed_step is None and which is None:
-            h = min(ctl.max_step, h * min(5.0, 0.9 * max(e, 1e-10) ** -0.2))
-        elif ctl.fixed_step is not None:
-            h = ctl.fixed_step
-    Y = np.array(ys)
-    accel = np.array([quat_matrix(yy[6:10]).T @ (a - scene.gravity) for yy, a in zip(Y, acc)]) / G0
-    ke0, pe0 = energy(scene, Y[0])
-    ke1, pe1 = energy(scene, Y[-1])
+    """Integrate from first contact to ctl.t_final or an outcome the loop detects."""
+    wall = time.perf_counter()
+    run = _Run(scene, ctl)
+    y = initial_state(scene, run)
+    run.run_state[lk.S_MOMENTUM] = quiescence_momenta(scene.v0, scene.omega0, scene.mass, scene.inertia)[0]
+    run.record(0.0, y.copy(), run.derivative(y))
+    status, t = run.loop(y, 0.0)
+    wall = time.perf_counter() - wall
+    k = int(run.cnt[lk.K_HIST])
+    Y = run.H_y[:k].copy()
+    ke0, ke1 = kinetic(scene, Y[0]), kinetic(scene, Y[-1])
+    released = float(scene.mass * scene.gravity @ (Y[-1, 0:3] - Y[0, 0:3]))
+    C = run.C
     elastic = 0.0
-    for leg, st, dl in zip(scene.legs, states, defl):
-        for j, cell in enumerate(leg.cells):
-            last = dl[-1][j]
-            if np.isfinite(last):
-                elastic += crush_cell.elastic_energy(cell.k, st.memory[j, 0], st.memory[j, 1], last)
-    work = float(Y[-1, 13])
-    released = pe0 - pe1
-    closure = abs(ke0 + released - (work + ke1)) / (ke0 + max(released, 0.0))
-    en = {"initial_J": ke0, "potential_change_J": released, "absorbed_J": work - elastic, "elastic_J": elastic,
-          "friction_J": 0.0, "kinetic_end_J": ke1, "closure_rel": closure}
-    return Result(np.array(ts), Y, [np.array(d) for d in defl], [np.array(f) for f in frc], accel, states,
-                  steps, rejected, nrhs, en)
+    for i in range(run.n):
+        if run.contact[i]:
+            for j in range(1 + int(run.geo[5][i])):
+                elastic += crush_cell.elastic_energy(run.cells[3][i, j], run.mem[i, j, 0], run.mem[i, j, 1],
+                                                     run.last[i, j])
+    cell = run.energy[:, :C].copy()
+    friction = run.energy[:, C].copy()
+    absorbed = float(cell.sum()) - elastic
+    denom = ke0 + max(released, 0.0)
+    closure = abs(ke0 + released - (absorbed + elastic + friction.sum() + ke1)) / denom if denom > 0 else 0.0
+    en = {"initial_J": ke0, "potential_change_J": released, "absorbed_J": absorbed, "elastic_J": elastic,
+          "friction_J": float(friction.sum()), "kinetic_end_J": ke1, "closure_rel": float(closure),
+          "leg_work_J": float(Y[-1, 13])}
+    rs = run.run_state
+    bottomed = (float(rs[lk.S_BOT_T]), int(rs[lk.S_BOT_LEG]), int(rs[lk.S_BOT_CELL])) if rs[lk.S_BOT_T] >= 0 else None
+    res = Result(run.H_t[:k].copy(), Y, run.H_dy[:k].copy(), run.H_d[:k].copy(), run.H_f[:k].copy(),
+                 run.H_X[:k].copy(), run.H_P[:k].copy(), run.H_c[:k].copy(), STATUS[status], "", bottomed, cell,
+                 friction, run.mem.copy(), int(run.cnt[lk.K_STEPS]), int(run.cnt[lk.K_REJECTED]),
+                 int(run.cnt[lk.K_RHS]), wall, en, scene.gravity)
+    return res

@@ -10,14 +10,18 @@ rotation about the symmetry axis.
 from __future__ import annotations
 
 import numpy as np
+from numba import njit
 
 
+@njit(cache=True)
 def quat_matrix(q: np.ndarray) -> np.ndarray:
     """Rotation matrix of a unit quaternion (body -> terrain)."""
-    w, x, y, z = q
-    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-                     [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-                     [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+    w, x, y, z = q[0], q[1], q[2], q[3]
+    m = np.empty((3, 3))
+    m[0, 0], m[0, 1], m[0, 2] = 1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)
+    m[1, 0], m[1, 1], m[1, 2] = 2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)
+    m[2, 0], m[2, 1], m[2, 2] = 2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)
+    return m
 
 
 def matrix_quat(m: np.ndarray) -> np.ndarray:
@@ -40,13 +44,18 @@ def matrix_quat(m: np.ndarray) -> np.ndarray:
     return q if q[0] >= 0 else -q
 
 
+@njit(cache=True)
 def quat_rate(q: np.ndarray, omega: np.ndarray) -> np.ndarray:
     """dq/dt = q (x) (0, omega) / 2 with omega in body axes."""
-    w, x, y, z = q
-    p, r, s = omega
-    return 0.5 * np.array([-x * p - y * r - z * s, w * p + y * s - z * r, w * r + z * p - x * s, w * s + x * r - y * p])
+    w, x, y, z = q[0], q[1], q[2], q[3]
+    p, r, s = omega[0], omega[1], omega[2]
+    out = np.empty(4)
+    out[0], out[1] = 0.5 * (-x * p - y * r - z * s), 0.5 * (w * p + y * s - z * r)
+    out[2], out[3] = 0.5 * (w * r + z * p - x * s), 0.5 * (w * s + x * r - y * p)
+    return out
 
 
+@njit(cache=True)
 def euler_rates(inertia: np.ndarray, omega: np.ndarray, moment: np.ndarray) -> np.ndarray:
     """Angular acceleration in principal axes: I w' = M - w x (I w) (eq. 6-8)."""
     return (moment - np.cross(omega, inertia * omega)) / inertia

@@ -7,6 +7,10 @@ or small-angle) and the cell forces; the ground force on the leg, which the mass
 capsule at the footpad, is X = -AF1 u + F_alpha e_alpha + F_beta e_beta (eq. 25-27) with F_alpha, F_beta
 the pads' generalized forces over the lever al, so that X . dd equals the cells' work exactly (energy
 closes). Cell rates come from the kinematics, not finite differences.
+
+`TelescopingLeg` describes a leg; `pack` turns a set of legs into the arrays the compiled functions take:
+geo = (attach (n,3), to_body (n,3,3), rho, pad_lever, pad_angles (n,P), n_pads, small_angle) and
+cells = (deflections (n,C,K), forces (n,C,K), n_points (n,C), k, c, yield force or -1 (n,C)).
 """
 
 from __future__ import annotations
@@ -14,9 +18,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+from numba import njit
 
 from . import crush_cell
 from .crush_cell import CellModel
+from .vec3 import cross, mtv, mv
 
 
 @dataclass(frozen=True)
@@ -33,81 +39,137 @@ class TelescopingLeg:
     pads: tuple[CellModel, ...]
     small_angle: bool = False
 
+    def __post_init__(self):
+        if len(self.pads) != len(self.pad_angles):
+            raise ValueError("one pad cell per pad angle")
+        if not (self.rho > 0 and self.pad_lever >= 0):
+            raise ValueError("leg length must be > 0 and pad lever >= 0")
+
     @property
     def cells(self) -> tuple[CellModel, ...]:
         return (self.axial, *self.pads)
 
 
-@dataclass(frozen=True)
-class LegLoad:
-    """One leg's state at an instant: force on the capsule (principal axes) and where it acts, the
-    terrain-normal ground force, deflections, cell forces and rates, the cells' power."""
+def pack(legs: tuple[TelescopingLeg, ...]):
+    """(geo, cells) arrays of a set of legs, cell curves padded to a common length."""
+    n = len(legs)
+    n_pad = max(len(leg.pads) for leg in legs)
+    n_cell = 1 + n_pad
+    n_pt = max(len(c.curve.deflection) for leg in legs for c in leg.cells)
+    angles = np.zeros((n, max(n_pad, 1)))
+    cd, cf = np.zeros((n, n_cell, n_pt)), np.zeros((n, n_cell, n_pt))
+    cn = np.zeros((n, n_cell), np.int64)
+    ck, cc, cy = np.ones((n, n_cell)), np.zeros((n, n_cell)), -np.ones((n, n_cell))
+    for i, leg in enumerate(legs):
+        angles[i, :len(leg.pads)] = leg.pad_angles
+        for j, cell in enumerate(leg.cells):
+            d, f, k, c, y = cell.arrays
+            cd[i, j, :len(d)], cf[i, j, :len(d)], cn[i, j] = d, f, len(d)
+            ck[i, j], cc[i, j], cy[i, j] = k, c, y
+    geo = (np.array([leg.attach for leg in legs], float), np.array([leg.to_body for leg in legs], float),
+           np.array([leg.rho for leg in legs]), np.array([leg.pad_lever for leg in legs]), angles,
+           np.array([len(leg.pads) for leg in legs], np.int64), np.array([leg.small_angle for leg in legs], np.int64))
+    return geo, (cd, cf, cn, ck, cc, cy)
 
-    force: np.ndarray
-    point: np.ndarray
-    normal: float
-    deflections: np.ndarray
-    forces: np.ndarray
-    power: float
-    al: float
-    alpha: float
-    beta: float
 
-
-def _frame(alpha: float, beta: float):
+@njit(cache=True)
+def leg_frame(alpha, beta):
+    """Unit vectors u (attachment -> footpad), e_alpha, e_beta in leg axes (eq. 17-19), as tuples."""
     ca, sa, cb, sb = np.cos(alpha), np.sin(alpha), np.cos(beta), np.sin(beta)
-    return (np.array([sa * cb, sa * sb, -ca]), np.array([ca * cb, ca * sb, sa]), np.array([-sb, cb, 0.0]))
+    return (sa * cb, sa * sb, -ca), (ca * cb, ca * sb, sa), (-sb, cb, 0.0)
 
 
-def leg_load(leg: TelescopingLeg, memory: np.ndarray, P: np.ndarray, r: np.ndarray, R: np.ndarray,
-             v: np.ndarray, omega: np.ndarray) -> LegLoad:
-    """Forces of a leg whose footpad is held at P (terrain) by a capsule at r, attitude R, velocity v, rate
-    omega (principal axes). memory: (n_cells, 2) committed (dmax, fmax) of axial then pad cells."""
-    p = R.T @ (P - r) - leg.attach                      # attachment -> footpad, principal axes
-    pdot = -np.cross(omega, p + leg.attach) - R.T @ v
-    d, ddot = leg.to_body.T @ p, leg.to_body.T @ pdot   # leg axes (eq. 16)
-    al = float(np.linalg.norm(d))
-    horiz = float(np.hypot(d[0], d[1]))
-    alpha = float(np.arctan2(horiz, -d[2]))             # eq. 17-19
-    beta = float(np.arctan2(d[1], d[0])) if horiz > 0 else 0.0
-    u, ea, eb = _frame(alpha, beta)
-    al_dot = float(u @ ddot)
-    alpha_dot = float(ea @ ddot) / al
-    beta_dot = float(eb @ ddot) / horiz if horiz > 0 else 0.0     # al sin(alpha) = horiz
-    n = 1 + len(leg.pads)
-    delta, rate, f = np.empty(n), np.empty(n), np.empty(n)
-    delta[0], rate[0] = leg.rho - al, -al_dot                        # eq. 20
-    g = np.asarray(leg.pad_angles) - beta
-    tilt, tilt_rate = (alpha, 1.0) if leg.small_angle else (np.sin(alpha), np.cos(alpha))
-    delta[1:] = leg.pad_lever * tilt * np.cos(g)                     # eq. 21
-    rate[1:] = leg.pad_lever * (tilt_rate * np.cos(g) * alpha_dot + tilt * np.sin(g) * beta_dot)
-    for j, cell in enumerate(leg.cells):
-        dd, ff, k, c, y = cell.arrays
-        f[j] = crush_cell.force(dd, ff, k, c, y, memory[j, 0], memory[j, 1], delta[j], rate[j])
-    pads = f[1:]
-    # Generalized pad forces over the footpad's lever arms: Q_alpha / al and Q_beta / (al sin alpha).
-    f_alpha = float(np.sum(pads * leg.pad_lever * tilt_rate * np.cos(g))) / al              # eq. 23
-    ratio = alpha / np.sin(alpha) if (leg.small_angle and alpha > 0) else 1.0            # T(alpha) / sin(alpha)
-    f_beta = float(np.sum(pads * leg.pad_lever * np.sin(g))) * ratio / al                # eq. 24
-    x_leg = -f[0] * u + f_alpha * ea + f_beta * eb                   # eq. 25-27
-    force = leg.to_body @ x_leg
-    return LegLoad(force, p + leg.attach, float((R @ force)[2]), delta, f, float(f @ rate), al, alpha, beta)
+@njit(cache=True)
+def cell_force(cells, i, j, mem, delta, rate):
+    """Force of cell j of leg i at deflection delta and rate, given its committed memory."""
+    cd, cf, cn, ck, cc, cy = cells
+    m = cn[i, j]
+    return crush_cell.force(cd[i, j, :m], cf[i, j, :m], ck[i, j], cc[i, j], cy[i, j], mem[j, 0], mem[j, 1],
+                            delta, rate)
 
 
-def axial_set(leg: TelescopingLeg, memory: np.ndarray) -> float:
+@njit(cache=True)
+def leg_force(geo, cells, i, mem, P, r, R, v, w, defl, frc, X):
+    """Forces of leg i with its footpad held at P (terrain axes) under a capsule at r, attitude R (principal ->
+    terrain), velocity v (terrain), rate w (principal). Writes the deflections, cell forces and the force X on
+    the capsule (principal axes); returns (cells' power, alpha, beta, al)."""
+    attach, to_body, rho, pad_lever, angles, n_pads, small = geo
+    a0, a1, a2 = attach[i, 0], attach[i, 1], attach[i, 2]
+    L = to_body[i]
+    b0, b1, b2 = mtv(R, P[0] - r[0], P[1] - r[1], P[2] - r[2])     # CG -> footpad, principal axes
+    c0, c1, c2 = cross(w[0], w[1], w[2], b0, b1, b2)
+    s0, s1, s2 = mtv(R, v[0], v[1], v[2])
+    d0, d1, d2 = mtv(L, b0 - a0, b1 - a1, b2 - a2)                 # leg axes (eq. 16)
+    e0, e1, e2 = mtv(L, -c0 - s0, -c1 - s1, -c2 - s2)              # its rate with the footpad held
+    al = np.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
+    horiz = np.sqrt(d0 * d0 + d1 * d1)
+    alpha = np.arctan2(horiz, -d2)                                  # eq. 17-19
+    beta = np.arctan2(d1, d0) if horiz > 0.0 else 0.0
+    u, ea, eb = leg_frame(alpha, beta)
+    delta = rho[i] - al                                             # eq. 20
+    rate = -(u[0] * e0 + u[1] * e1 + u[2] * e2)
+    defl[0] = delta
+    frc[0] = cell_force(cells, i, 0, mem, delta, rate)
+    power = frc[0] * rate
+    alpha_dot = (ea[0] * e0 + ea[1] * e1 + ea[2] * e2) / al
+    beta_dot = (eb[0] * e0 + eb[1] * e1) / horiz if horiz > 0.0 else 0.0   # al sin(alpha) = horiz
+    if small[i]:
+        tilt, tilt_rate = alpha, 1.0
+        ratio = alpha / np.sin(alpha) if alpha > 0.0 else 1.0      # T(alpha) / sin(alpha)
+    else:
+        tilt, tilt_rate, ratio = np.sin(alpha), np.cos(alpha), 1.0
+    q_alpha, q_beta = 0.0, 0.0
+    for j in range(n_pads[i]):
+        g = angles[i, j] - beta
+        cg, sg = np.cos(g), np.sin(g)
+        dj = pad_lever[i] * tilt * cg                               # eq. 21
+        rj = pad_lever[i] * (tilt_rate * cg * alpha_dot + tilt * sg * beta_dot)
+        fj = cell_force(cells, i, j + 1, mem, dj, rj)
+        defl[j + 1], frc[j + 1] = dj, fj
+        power += fj * rj
+        q_alpha += fj * pad_lever[i] * tilt_rate * cg               # eq. 23: generalized forces of the pads
+        q_beta += fj * pad_lever[i] * sg                            # eq. 24
+    fa, fb = q_alpha / al, q_beta * ratio / al
+    X[0], X[1], X[2] = mv(L, -frc[0] * u[0] + fa * ea[0] + fb * eb[0], -frc[0] * u[1] + fa * ea[1] + fb * eb[1],
+                          -frc[0] * u[2] + fa * ea[2])              # eq. 25-27
+    return power, alpha, beta, al
+
+
+@njit(cache=True)
+def axial_set(cells, i, mem):
     """Permanent set of the axial cell (m)."""
-    return crush_cell.permanent_set(leg.axial.k, memory[0, 0], memory[0, 1])
+    return crush_cell.permanent_set(cells[3][i, 0], mem[0, 0], mem[0, 1])
 
 
-def axial_deflection(leg: TelescopingLeg, P: np.ndarray, r: np.ndarray, R: np.ndarray) -> float:
-    """Delta_1 = rho - al of a leg whose footpad is held at P (eq. 16-17, 20), without the forces."""
-    return leg.rho - float(np.linalg.norm(R.T @ (P - r) - leg.attach))
+@njit(cache=True)
+def footpad_at(geo, i, length, alpha, beta, r, R):
+    """Terrain position (tuple) of leg i's footpad at length and leg-axes direction (alpha, beta) (eq. 13-15)."""
+    attach, to_body = geo[0], geo[1]
+    u = leg_frame(alpha, beta)[0]
+    l0, l1, l2 = mv(to_body[i], length * u[0], length * u[1], length * u[2])
+    x0, x1, x2 = mv(R, attach[i, 0] + l0, attach[i, 1] + l1, attach[i, 2] + l2)
+    return r[0] + x0, r[1] + x1, r[2] + x2
 
 
-def free_footpad(leg: TelescopingLeg, memory: np.ndarray, tilt: tuple[float, float], r: np.ndarray,
-                 R: np.ndarray) -> np.ndarray:
-    """Unloaded footpad position in terrain axes (eq. 13-15): length rho less the axial permanent set, at the
-    tilt (alpha, beta) the leg had when it last left the ground."""
-    length = leg.rho - axial_set(leg, memory)
-    u, _, _ = _frame(*tilt)
-    return r + R @ (leg.attach + leg.to_body @ (length * u))
+@njit(cache=True)
+def free_footpad(geo, cells, i, mem, tilt, r, R):
+    """Unloaded footpad in terrain axes (eq. 13): length rho less the axial permanent set, at the tilt the
+    leg had when it last left the ground."""
+    return footpad_at(geo, i, geo[2][i] - axial_set(cells, i, mem), tilt[0], tilt[1], r, R)
+
+
+@njit(cache=True)
+def ground_point(geo, i, alpha, beta, r, R, out):
+    """Where the ray from leg i's attachment along (alpha, beta) meets the terrain z = 0; False if it
+    points away from the terrain."""
+    attach, to_body = geo[0], geo[1]
+    bz = r[2] + R[2, 0] * attach[i, 0] + R[2, 1] * attach[i, 1] + R[2, 2] * attach[i, 2]
+    u = leg_frame(alpha, beta)[0]
+    l0, l1, l2 = mv(to_body[i], u[0], u[1], u[2])
+    t0, t1, t2 = mv(R, l0, l1, l2)
+    if t2 >= -1e-12 or bz <= 0.0:
+        return False
+    s = -bz / t2
+    b0, b1, _ = mv(R, attach[i, 0], attach[i, 1], attach[i, 2])
+    out[0], out[1], out[2] = r[0] + b0 + s * t0, r[1] + b1 + s * t1, 0.0
+    return True

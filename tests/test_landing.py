@@ -75,7 +75,7 @@ def test_flat_drop_matches_the_closed_form():
     x_ex, t_ex = _exact_flat_drop()
     # Issue 4: within 1e-6 relative (Hermite peak on an rtol 1e-10 solution: ~1e-9).
     assert abs(x_max - x_ex) / x_ex < 1e-6 and abs(t_max - t_ex) / t_ex < 1e-6
-    axial = res.deflections[0][:, 0]
+    axial = res.deflections[:, 0, 0]
     assert np.nanmax(np.abs(axial - stroke)) < 1e-9          # the leg strokes with the CG
     assert np.max(np.abs(res.accel_g[:, :2])) < 1e-9        # no lateral acceleration
     assert np.max(np.abs(res.y[:, 10:13])) < 1e-9            # no rotation
@@ -84,6 +84,6 @@ def test_flat_drop_matches_the_closed_form():
 def test_energy_closes_on_an_inclined_landing_with_pads_and_rebound():
     q0 = matrix_quat(axis_rotation(np.array([1.0, 0.0, 0.0]), np.radians(8)))
     res = simulate(_scene(v0=(0.0, 3.0, -V), q0=q0, w0=(0.5, 0.0, 0.0)), Controls(t_final=0.25, rtol=1e-7, atol=1e-10))
-    pads = np.concatenate([d[:, 1:] for d in res.deflections])
+    pads = res.deflections[:, :, 1:]
     assert np.nanmax(pads) > 0.005                           # pads crush: the case exercises eq. 21-27
     assert res.energy["closure_rel"] < 1e-4                  # issue 4 target

@@ -1,0 +1,346 @@
+"""The compiled step loop of a landing (AFFDL-TR-66-33 Sec. V; the report used Runge-Kutta-Merson).
+
+State y = (r, v terrain axes; q principal -> terrain; omega principal axes; W the work the legs took from
+the capsule). Dormand-Prince 5(4) with error control (or fixed steps) advances it. Discrete memory lives in
+arrays the caller owns and changes only when a step is accepted (`_commit`): cell maxima, footpad positions
+and slip state, contact flags. Touchdown and lift-off are located by bisection on the step size to
+`event_tol` seconds. The loop returns to the caller on a status: the end time, free flight (no leg on the
+ground: the caller flies the capsule in closed form), a full history buffer, or an outcome it detects
+(bottoming, tip angle, body contact, quiescence).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from . import crush_cell
+from .footpad_slip import footpad_force
+from .rigid_body import quat_matrix, quat_rate
+from .stability import quiescence_momenta, quiescence_update, stable_by_energy, tipping_margins
+from .telescoping_leg import axial_set, free_footpad, leg_force
+from .vec3 import cross, mtv, mv
+
+# Dormand-Prince 5(4).
+A = np.array([[0, 0, 0, 0, 0, 0], [1 / 5, 0, 0, 0, 0, 0], [3 / 40, 9 / 40, 0, 0, 0, 0],
+              [44 / 45, -56 / 15, 32 / 9, 0, 0, 0], [19372 / 6561, -25360 / 2187, 64448 / 6561, -212 / 729, 0, 0],
+              [9017 / 3168, -355 / 33, 46732 / 5247, 49 / 176, -5103 / 18656, 0],
+              [35 / 384, 0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84]])
+B5 = np.array([35 / 384, 0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84, 0])
+B4 = np.array([5179 / 57600, 0, 7571 / 16695, 393 / 640, -92097 / 339200, 187 / 2100, 1 / 40])
+NY = 14
+
+# Statuses returned to the caller.
+END, FLIGHT, BUFFER, BOTTOMED, TIPPED, BODY, QUIET, FAILED, STABLE = 0, 1, 2, 3, 4, 5, 6, 7, 8
+# Controls (float array).
+C_TFINAL, C_RTOL, C_ATOL, C_FIXED, C_MAXSTEP, C_EVENTTOL, C_STOPBOTTOM, C_TIPCOS, C_CLEAR, C_FLIGHT, \
+    C_QUIET_FRAC, C_TAUS, C_PERIOD, C_ENERGY_T = range(14)
+# Counters (int array).
+K_STEPS, K_REJECTED, K_RHS, K_HIST = range(4)
+# Run scalars (float array): step size, quiescence clock, reference momentum, first bottoming (t, leg, cell).
+S_H, S_QUIET, S_MOMENTUM, S_BOT_T, S_BOT_LEG, S_BOT_CELL = range(6)
+EVENT_GTOL = 1e-13  # m: an event function this close to zero ends the search
+
+ARM = 1e-7          # m: a leg's next switch is armed once it is this far from its last one
+BAND = 1e-4         # m: an unarmed leg switches only this far past zero (grazing contact never chatters)
+
+
+@njit(cache=True)
+def _legs(geo, cells, mu, mem, contact, P, sliding, y, Pt, slt, dt, ft, Xt, R):
+    """Footpad, slip state and forces of every leg on the ground at state y; returns the cells' power."""
+    r, v, w = y[0:3], y[3:6], y[10:13]
+    power = 0.0
+    for i in range(len(contact)):
+        if contact[i]:
+            sl, pw, _, _ = footpad_force(geo, cells, i, mem[i], P[i], sliding[i], mu[0], mu[1], r, R, v, w,
+                                         Pt[i], dt[i], ft[i], Xt[i])
+            slt[i] = sl
+            power += pw
+    return power
+
+
+@njit(cache=True)
+def rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y, dy, Pt, slt, dt, ft, Xt):
+    """dy/dt: eq. 3-5 in terrain axes, Euler's equations 6-8 in principal axes, quaternion rate, leg work."""
+    q = y[6:10] / np.sqrt(y[6] ** 2 + y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
+    R = quat_matrix(q)
+    power = _legs(geo, cells, mu, mem, contact, P, sliding, y, Pt, slt, dt, ft, Xt, R)
+    F0 = F1 = F2 = M0 = M1 = M2 = 0.0
+    for i in range(len(contact)):
+        if contact[i]:
+            p0, p1, p2 = mtv(R, Pt[i, 0] - y[0], Pt[i, 1] - y[1], Pt[i, 2] - y[2])
+            m0, m1, m2 = cross(p0, p1, p2, Xt[i, 0], Xt[i, 1], Xt[i, 2])
+            F0, F1, F2 = F0 + Xt[i, 0], F1 + Xt[i, 1], F2 + Xt[i, 2]
+            M0, M1, M2 = M0 + m0, M1 + m1, M2 + m2
+    a0, a1, a2 = mv(R, F0, F1, F2)
+    w0, w1, w2 = y[10], y[11], y[12]
+    h0, h1, h2 = cross(w0, w1, w2, inertia[0] * w0, inertia[1] * w1, inertia[2] * w2)
+    dy[0], dy[1], dy[2] = y[3], y[4], y[5]
+    dy[3], dy[4], dy[5] = gravity[0] + a0 / mass, gravity[1] + a1 / mass, gravity[2] + a2 / mass
+    dy[6:10] = quat_rate(q, y[10:13])
+    dy[10], dy[11], dy[12] = (M0 - h0) / inertia[0], (M1 - h1) / inertia[1], (M2 - h2) / inertia[2]   # eq. 6-8
+    dy[13] = power
+
+
+@njit(cache=True)
+def _events(cells, geo, mem, contact, tilt, armed, y, dt, g, raw):
+    """Per leg: free footpad height (in the air) or axial compression beyond the set (on the ground, from the
+    deflections dt already computed at y); an event is a crossing of zero from above. An unarmed leg's
+    threshold sits BAND past zero, so a footpad grazing the terrain stays put at zero force until it clearly
+    leaves instead of switching every step."""
+    R = quat_matrix(y[6:10] / np.sqrt(y[6] ** 2 + y[7] ** 2 + y[8] ** 2 + y[9] ** 2))
+    for i in range(len(contact)):
+        if contact[i]:
+            g[i] = dt[i, 0] - axial_set(cells, i, mem[i])
+        else:
+            g[i] = free_footpad(geo, cells, i, mem[i], tilt[i], y[0:3], R)[2]
+        if not (raw or armed[i]):
+            g[i] += BAND
+
+
+@njit(cache=True)
+def _crossing(g_prev, g, n):
+    """The most negative event value among legs crossing zero from above, +inf if none."""
+    worst = np.inf
+    for i in range(n):
+        if g_prev[i] > 0.0 and g[i] <= 0.0 and g[i] < worst:
+            worst = g[i]
+    return worst
+
+
+@njit(cache=True)
+def _stage(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y, h, K, y1, err, work):
+    """One Dormand-Prince step of size h from y with K[0] = f(y): y1, the error estimate, K[6] = f(y1); the
+    work arrays are left holding the legs at y1 (the last stage is evaluated there)."""
+    Pt, slt, dt, ft, Xt = work
+    for s in range(1, 7):
+        yi = y.copy()
+        for j in range(s):
+            if A[s, j] != 0.0:
+                yi += h * A[s, j] * K[j]
+        rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, yi, K[s], Pt, slt, dt, ft, Xt)
+    y1[:] = y
+    err[:] = 0.0
+    for j in range(7):
+        y1 += h * B5[j] * K[j]
+        err += h * (B5[j] - B4[j]) * K[j]
+
+
+@njit(cache=True)
+def _commit(geo, cells, mu, mem, contact, P, sliding, tilt, armed, y, energy, last, work, g):
+    """Accept state y: arm legs clear of their last switch, move footpads, add the step's work, update cell
+    memory. energy (n, C + 1): each cell's work (exact for the rate-free force, trapezoidal for the damper),
+    then the friction work. last (n, 2C + 3): deflections, damper forces, the in-plane push on the footpad
+    (2) and a flag that they are set."""
+    Pt, slt, dt, ft, Xt = work
+    cd, cf, cn, ck, cc, cy = cells
+    _events(cells, geo, mem, contact, tilt, armed, y, dt, g, True)
+    R = quat_matrix(y[6:10])
+    C = mem.shape[1]
+    for i in range(len(contact)):
+        armed[i] = armed[i] or g[i] > ARM
+        if not contact[i]:
+            continue
+        fe = mv(R, Xt[i, 0], Xt[i, 1], Xt[i, 2])
+        known = last[i, 2 * C + 2] > 0.0
+        if known:                                             # friction: trapezoid of push . slide
+            energy[i, C] += 0.5 * ((-fe[0] + last[i, 2 * C]) * (Pt[i, 0] - P[i, 0])
+                                   + (-fe[1] + last[i, 2 * C + 1]) * (Pt[i, 1] - P[i, 1]))
+        P[i] = Pt[i]
+        sliding[i] = slt[i]
+        for j in range(1 + geo[5][i]):
+            m = cn[i, j]
+            d, f = cd[i, j, :m], cf[i, j, :m]
+            delta = dt[i, j]
+            damper = ft[i, j] - crush_cell.force(d, f, ck[i, j], 0.0, cy[i, j], mem[i, j, 0], mem[i, j, 1], delta, 0.0)
+            if known:
+                energy[i, j] += crush_cell.static_work(d, f, ck[i, j], cy[i, j], mem[i, j, 0], mem[i, j, 1],
+                                                       last[i, j], delta)
+                energy[i, j] += 0.5 * (damper + last[i, C + j]) * (delta - last[i, j])
+            mem[i, j, 0], mem[i, j, 1] = crush_cell.commit(d, f, cy[i, j], mem[i, j, 0], mem[i, j, 1], delta)
+            last[i, j], last[i, C + j] = delta, damper
+        last[i, 2 * C], last[i, 2 * C + 1], last[i, 2 * C + 2] = -fe[0], -fe[1], 1.0
+
+
+@njit(cache=True)
+def switch(geo, cells, mem, contact, P, sliding, tilt, armed, y, which, last, work):
+    """Touchdown (the footpad holds where it landed) or lift-off (the tilt is kept for recontact, eq. 13)."""
+    Pt, slt, dt, ft, Xt = work
+    R = quat_matrix(y[6:10])
+    armed[which] = 0
+    C = mem.shape[1]
+    if contact[which]:
+        _, alpha, beta, _ = leg_force(geo, cells, which, mem[which], P[which], y[0:3], R, y[3:6], y[10:13],
+                                      dt[which], ft[which], Xt[which])
+        contact[which], tilt[which, 0], tilt[which, 1] = 0, alpha, beta
+        last[which, 2 * C + 2] = 0.0
+    else:
+        pad = free_footpad(geo, cells, which, mem[which], tilt[which], y[0:3], R)
+        P[which, 0], P[which, 1], P[which, 2] = pad[0], pad[1], 0.0
+        contact[which], sliding[which] = 1, 1                   # (re)contact slides on mu_D (eq. 33)
+        leg_force(geo, cells, which, mem[which], P[which], y[0:3], R, y[3:6], y[10:13], dt[which], ft[which],
+                  Xt[which])
+        fe = mv(R, Xt[which, 0], Xt[which, 1], Xt[which, 2])
+        for j in range(C):
+            last[which, j], last[which, C + j] = dt[which, j], 0.0
+        last[which, 2 * C], last[which, 2 * C + 1], last[which, 2 * C + 2] = -fe[0], -fe[1], 1.0
+
+
+@njit(cache=True)
+def _monitor(geo, mass, inertia, gravity, bottoming, up, body, order, mem, contact, P, y, t, dt_step, ctl, run):
+    """Outcome checks after an accepted step; a status or -1."""
+    R = quat_matrix(y[6:10])
+    n = len(contact)
+    for i in range(n):
+        if contact[i] and run[S_BOT_T] < 0.0:
+            for j in range(1 + geo[5][i]):
+                if mem[i, j, 0] > bottoming[i, j]:
+                    run[S_BOT_T], run[S_BOT_LEG], run[S_BOT_CELL] = t, i, j
+    if run[S_BOT_T] >= 0.0 and ctl[C_STOPBOTTOM] > 0.0:
+        return BOTTOMED
+    u0, u1, u2 = mv(R, up[0], up[1], up[2])
+    gn = np.sqrt(gravity[0] ** 2 + gravity[1] ** 2 + gravity[2] ** 2)
+    if -(u0 * gravity[0] + u1 * gravity[1] + u2 * gravity[2]) / gn <= ctl[C_TIPCOS]:
+        return TIPPED                                          # nutation past the critical angle (stmt 367)
+    for b in range(body.shape[0]):
+        if y[2] + R[2, 0] * body[b, 0] + R[2, 1] * body[b, 1] + R[2, 2] * body[b, 2] < ctl[C_CLEAR]:
+            return BODY
+    on_ground = 0
+    for i in range(n):
+        on_ground += contact[i]
+    if ctl[C_TAUS] > 0.0:                                      # quiescence of motion (main program 378-390)
+        normal, _ = quiescence_momenta(y[3:6], y[10:13], mass, inertia)
+        run[S_QUIET], quiet = quiescence_update(dt_step, normal, run[S_MOMENTUM], run[S_QUIET], ctl[C_PERIOD],
+                                                ctl[C_TAUS], on_ground > 0, ctl[C_QUIET_FRAC])
+        if quiet:
+            return QUIET
+    # Energy criterion (QUIMOT), only once the CG has stopped approaching the terrain, so that the peak
+    # strokes and accelerations are complete when it ends the run (the report checked from t = 0.05 s on).
+    if ctl[C_ENERGY_T] >= 0.0 and t >= ctl[C_ENERGY_T] and on_ground == n and n >= 3 and y[5] >= 0.0:
+        pads = np.empty((n, 3))
+        for k in range(n):
+            pads[k] = P[order[k]]
+        margins = tipping_margins(y[0:3], y[3:6], R, y[10:13], mass, inertia, gravity, pads, True)
+        if stable_by_energy(margins):                          # eq. 89-95 (QUIMOT) for every adjacent pair
+            return STABLE
+    return -1
+
+
+@njit(cache=True)
+def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem, contact, P, sliding, tilt, armed,
+        energy, last, y, t, ctl, cnt, run_state, H_t, H_y, H_dy, H_d, H_f, H_X, H_P, H_c):
+    """Advance the landing from (t, y) until t_final or a status; y, t and every memory array are updated in
+    place. Returns (status, t)."""
+    n, n_cell = mem.shape[0], mem.shape[1]
+    K = np.zeros((7, NY))
+    y1, err, g_prev, g1 = np.empty(NY), np.empty(NY), np.empty(n), np.empty(n)
+    work = (np.zeros((n, 3)), np.zeros(n, np.int64), np.zeros((n, n_cell)), np.zeros((n, n_cell)), np.zeros((n, 3)))
+    Pt, slt, dt, ft, Xt = work
+    args = (geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding)
+    rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y, K[0], Pt, slt, dt, ft, Xt)
+    cnt[K_RHS] += 1
+    _events(cells, geo, mem, contact, tilt, armed, y, dt, g_prev, False)
+    fixed = ctl[C_FIXED] > 0.0
+    h = ctl[C_FIXED] if fixed else run_state[S_H]
+    t_final = ctl[C_TFINAL]
+    e = 1.0
+    while t < t_final - 1e-15:
+        if not np.isfinite(h) or h < 1e-14:
+            return FAILED, t
+        h = min(h, t_final - t)
+        _stage(*args, y, h, K, y1, err, work)
+        cnt[K_RHS] += 6
+        if not fixed:
+            e = 0.0
+            for c in range(NY):
+                sc = ctl[C_ATOL] + ctl[C_RTOL] * max(abs(y[c]), abs(y1[c]))
+                e += (err[c] / sc) ** 2
+            e = np.sqrt(e / NY)
+            if not np.isfinite(e):
+                cnt[K_REJECTED] += 1
+                h *= 0.2
+                continue
+            if e > 1.0:
+                cnt[K_REJECTED] += 1
+                h *= max(0.2, 0.9 * e ** -0.2)
+                continue
+        _events(cells, geo, mem, contact, tilt, armed, y1, dt, g1, False)
+        h_acc = h
+        if _crossing(g_prev, g1, n) < np.inf:
+            # The earliest event: Illinois false position on the step size, each trial a real step.
+            lo, hi, f_lo, f_hi, side, mid = 0.0, h, 1.0, _crossing(g_prev, g1, n), 0, -1.0
+            for i in range(n):
+                if g_prev[i] > 0.0 and g1[i] <= 0.0:
+                    f_lo = min(f_lo, g_prev[i])
+            while hi - lo > ctl[C_EVENTTOL]:
+                mid = hi - f_hi * (hi - lo) / (f_hi - f_lo)
+                if not (lo < mid < hi):
+                    mid = 0.5 * (lo + hi)
+                _stage(*args, y, mid, K, y1, err, work)
+                cnt[K_RHS] += 6
+                _events(cells, geo, mem, contact, tilt, armed, y1, dt, g1, False)
+                f_mid = _crossing(g_prev, g1, n)
+                if f_mid < np.inf:
+                    hi, f_hi = mid, f_mid
+                    if side == -1:
+                        f_lo *= 0.5
+                    side = -1
+                    if f_mid > -EVENT_GTOL:
+                        break
+                else:
+                    f_mid = np.inf
+                    for i in range(n):
+                        if g_prev[i] > 0.0:
+                            f_mid = min(f_mid, g1[i])
+                    lo, f_lo = mid, f_mid
+                    if side == 1:
+                        f_hi *= 0.5
+                    side = 1
+            h_acc = hi
+            if h_acc != mid:
+                _stage(*args, y, h_acc, K, y1, err, work)
+                cnt[K_RHS] += 6
+                _events(cells, geo, mem, contact, tilt, armed, y1, dt, g1, False)
+        which = -1
+        best = np.inf
+        for i in range(n):
+            if g_prev[i] > 0.0 and g1[i] <= 0.0 and g1[i] < best:
+                best, which = g1[i], i
+        t += h_acc
+        y[:] = y1
+        y[6:10] /= np.sqrt(y[6] ** 2 + y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
+        cnt[K_STEPS] += 1
+        _commit(geo, cells, mu, mem, contact, P, sliding, tilt, armed, y, energy, last, work, g1)
+        k = cnt[K_HIST]                                # record as committed (a switching leg: before it)
+        H_t[k] = t
+        H_y[k] = y
+        for i in range(n):
+            if contact[i]:
+                H_d[k, i], H_f[k, i], H_X[k, i] = dt[i], ft[i], Xt[i]
+            else:
+                H_d[k, i], H_f[k, i], H_X[k, i] = np.nan, 0.0, 0.0
+        H_P[k, :, :] = P
+        H_c[k] = contact
+        if which < 0:
+            K[0] = K[6]                               # first same as last: memory updates keep the force
+        else:
+            switch(geo, cells, mem, contact, P, sliding, tilt, armed, y, which, last, work)
+            rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y, K[0], Pt, slt, dt, ft, Xt)
+            cnt[K_RHS] += 1
+        H_dy[k] = K[0]
+        cnt[K_HIST] = k + 1
+        _events(cells, geo, mem, contact, tilt, armed, y, dt, g_prev, False)
+        if fixed:
+            h = ctl[C_FIXED]
+        elif which < 0:
+            h = min(ctl[C_MAXSTEP], h * min(5.0, 0.9 * max(e, 1e-10) ** -0.2))
+        run_state[S_H] = h
+        status = _monitor(geo, mass, inertia, gravity, bottoming, up, body, order, mem, contact, P, y, t, h_acc,
+                          ctl, run_state)
+        if status >= 0:
+            return status, t
+        if ctl[C_FLIGHT] > 0.0 and np.sum(contact) == 0:
+            return FLIGHT, t
+        if cnt[K_HIST] >= len(H_t):
+            return BUFFER, t
+    return END, t
