@@ -1,4 +1,4 @@
-"""Command line: `alightsize design | audit | loads | scale | reports` (see CONTRACTS.md). Exit 0 ok, 1 check failed,
+"""Command line: `alightsize design | audit | loads | simulate | scale | reports` (see CONTRACTS.md). Exit 0 ok, 1 check failed,
 2 bad input, 3 internal error."""
 
 from __future__ import annotations
@@ -58,6 +58,21 @@ def _loads(args) -> int:
     return 0
 
 
+def _simulate(args) -> int:
+    from .landing_output import summary, write_landing
+    from .scene_config import read_scene
+    from sim.landing import simulate
+    cfg = read_scene(args.scene)
+    res = simulate(cfg.scene, cfg.controls)
+    files = write_landing(cfg, res, Path(args.out))
+    s = summary(cfg, res)
+    print(f"{cfg.name}: {s['outcome']} at {s['t_end_s']:.4f} s ({s['reason']}); peak XDD(3) {s['peak']['xdd_g'][2]:.2f} g; "
+          f"energy closure {s['energy']['closure_rel']:.2e}; {res.steps} steps, {res.rhs_evals} evaluations, "
+          f"{res.wall_s * 1e3:.1f} ms")
+    print("wrote " + ", ".join(str(f) for f in files))
+    return 1 if (args.require_success and s["outcome"] == "failed") else 0
+
+
 def _scale(args) -> int:
     from .atomic import write_atomic
     from .scaling import table27
@@ -106,6 +121,11 @@ def parser() -> argparse.ArgumentParser:
     lo.add_argument("--out", required=True, help="output folder")
     lo.add_argument("--units", choices=("US", "SI"), help="display units of the reports (default: the config's)")
     lo.set_defaults(run=_loads)
+    si = sub.add_parser("simulate", help="one landing of a scene config")
+    si.add_argument("scene")
+    si.add_argument("--out", required=True, help="output folder")
+    si.add_argument("--require-success", action="store_true", help="exit 1 when the landing fails numerically")
+    si.set_defaults(run=_simulate)
     s = sub.add_parser("scale", help="test-model scaling factors (Table 27)")
     s.add_argument("--length", type=float, required=True, help="length scale, full / model")
     s.add_argument("--mass", type=float, required=True, help="mass scale, full / model")

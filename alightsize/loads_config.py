@@ -41,13 +41,16 @@ def _quantities(node: Node, name: str, dim: str) -> list[float]:
     return [node.parse_quantity(f"{name}[{i}]", v, dim, positive=False) for i, v in enumerate(values)]
 
 
-def _curve(node: Node) -> CrushCurve:
-    node.allow(("deflection", "force", "factor", "note"))
+def read_curve(node: Node, extra: tuple[str, ...] = ()) -> CrushCurve:
+    """A crush curve table (deflection, force, factor, note); with `extra` keys allowed the caller reads
+    them and finishes the node."""
+    node.allow(("deflection", "force", "factor", "note", *extra))
     d = _quantities(node, "deflection", "length")
     f = _quantities(node, "force", "force")
     factor = node.number("factor", 1.0)
     node.string("note", "")
-    node.finish()
+    if not extra:
+        node.finish()
     if len(d) != len(f):
         raise node.error("force", f"as many forces as deflections ({len(d)})", f"{len(f)}")
     if d[0] < 0 or any(b < a for a, b in zip(d, d[1:])):
@@ -133,7 +136,7 @@ def _case(node: Node, geometry: ArticulatedGeometry | None, truss: TrussAngles |
                 PLD=node.quantity("return_spring_preload", "force", default=g.PLD, positive=False))
     if g.SPRG < 0 or g.PLD < 0:
         raise node.error("return_spring_rate", "a return spring rate and preload of 0 or more", f"{g.SPRG}, {g.PLD}")
-    upper, lower = _curve(node.table("upper")), _curve(node.table("lower"))
+    upper, lower = read_curve(node.table("upper")), read_curve(node.table("lower"))
     node.finish()
     return LegCase(name, g, truss, upper, lower, p0, p1)
 

@@ -41,6 +41,7 @@ DIMS = {d.name: d for d in (
     Dim("energy", 1, 2, -2),
     Dim("spring_rate", 1, 0, -2),
     Dim("angular_velocity", 0, 0, -1),
+    Dim("damping", 1, 0, -1),
 )}
 
 # What a user most likely meant when the dimension is wrong: (wanted, found) -> hint.
@@ -91,7 +92,7 @@ def example(dim: str) -> str:
             "stress": "69000 psi", "density": "0.100 lb/in^3", "velocity": "35 ft/s",
             "acceleration": "20 g_0", "time": "0.5 s", "inertia": "3.326 slug*ft^2",
             "energy": "68000 ft*lbf", "spring_rate": "500 lbf/in", "angle": "15 deg",
-            "angular_velocity": "3 rad/s", "dimensionless": "1.2"}[dim]
+            "angular_velocity": "3 rad/s", "damping": "300 lbf*s/ft", "dimensionless": "1.2"}[dim]
 
 
 # Display units per dimension for the two unit systems a report may ask for.
@@ -99,11 +100,11 @@ DISPLAY = {
     "US": {"length": "in", "area": "in^2", "second_moment": "in^4", "mass": "lb", "force": "lbf",
            "moment": "lbf*in", "stress": "psi", "density": "lb/in^3", "velocity": "ft/s",
            "acceleration": "g_0", "time": "s", "inertia": "slug*ft^2", "energy": "ft*lbf",
-           "spring_rate": "lbf/in", "angular_velocity": "rad/s", "dimensionless": ""},
+           "spring_rate": "lbf/in", "angular_velocity": "rad/s", "damping": "lbf*s/ft", "dimensionless": ""},
     "SI": {"length": "mm", "area": "mm^2", "second_moment": "mm^4", "mass": "kg", "force": "N",
            "moment": "N*m", "stress": "MPa", "density": "kg/m^3", "velocity": "m/s",
            "acceleration": "m/s^2", "time": "s", "inertia": "kg*m^2", "energy": "J",
-           "spring_rate": "N/mm", "angular_velocity": "rad/s", "dimensionless": ""},
+           "spring_rate": "N/mm", "angular_velocity": "rad/s", "damping": "N*s/m", "dimensionless": ""},
 }
 
 _LABEL = {"in^2": "in²", "in^4": "in⁴", "mm^2": "mm²", "mm^4": "mm⁴", "lbf*in": "lbf·in",

@@ -1,9 +1,8 @@
 """One landing of a rigid capsule on telescoping legs (AFFDL-TR-66-33 Sec. V).
 
-`simulate(scene, controls)` places the capsule so that its lowest footpad touches the terrain at t = 0,
-runs the compiled step loop (`landing_kernel.run`) and, whenever no leg touches an axisymmetric capsule,
-flies it in closed form (eq. 62-88) to the next touchdown instead of integrating. It returns the history at
-every accepted step, the outcome and the energy audit.
+`simulate(scene, controls)` places the capsule so that its lowest footpad touches the terrain at t = 0 and
+runs the compiled step loop (`landing_kernel.run`; free flight of an axisymmetric capsule in closed form).
+It returns the history at every accepted step, the outcome and the energy audit.
 """
 
 from __future__ import annotations
@@ -12,11 +11,10 @@ import time
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.optimize import brentq
 
 from . import crush_cell
 from . import landing_kernel as lk
-from .rigid_body import free_flight, quat_matrix
+from .rigid_body import quat_matrix
 from .stability import quiescence_momenta
 from .telescoping_leg import TelescopingLeg, free_footpad, pack
 
@@ -186,51 +184,8 @@ class _Run:
                                self.H_y, self.H_dy, self.H_d, self.H_f, self.H_X, self.H_P, self.H_c)
             if status == lk.BUFFER:
                 self._grow(2 * len(self.H_t))
-            elif status == lk.FLIGHT:
-                t = self.fly(y, t)
             else:
                 return status, t
-
-    def fly(self, y: np.ndarray, t0: float) -> float:
-        """Closed-form free flight (eq. 62-88) to the next touchdown or the final time; updates y."""
-        s, t_final = self.scene, self.ctl.t_final
-        r0, v0, q0, w0 = y[0:3].copy(), y[3:6].copy(), y[6:10].copy(), y[10:13].copy()
-
-        def state(dt):
-            r, v, q, w = free_flight(r0, v0, q0, w0, s.inertia, s.gravity, dt)
-            return r, v, q, w
-
-        def lowest(dt):
-            r, _, q, _ = state(dt)
-            return float(np.min(self.heights(r, quat_matrix(q))))
-
-        sample = min(1e-3, self.ctl.max_step)
-        dt_lo, dt_hi, found = 0.0, 0.0, False
-        while t0 + dt_hi < t_final:
-            dt_hi = min(dt_lo + sample, t_final - t0)
-            if lowest(dt_hi) <= 0.0:
-                found = True
-                break
-            self.record(t0 + dt_hi, np.concatenate([*state(dt_hi), [y[13]]]), self._flight_dy(state(dt_hi)))
-            dt_lo = dt_hi
-        if found:
-            dt_hi = brentq(lowest, dt_lo, dt_hi, xtol=self.ctl.event_tol, rtol=4 * np.finfo(float).eps)
-        r, v, q, w = state(dt_hi)
-        y[:13] = np.concatenate([r, v, q, w])
-        if found:
-            R = quat_matrix(q)
-            which = int(np.argmin(self.heights(r, R)))
-            lk.switch(self.geo, self.cells, self.mem, self.contact, self.P, self.sliding, self.tilt, self.armed, y,
-                      which, self.last, self.work)
-        self.record(t0 + dt_hi, y.copy(), self.derivative(y))
-        return t0 + dt_hi
-
-    def _flight_dy(self, st) -> np.ndarray:
-        r, v, q, w = st
-        dy = np.zeros(14)
-        dy[0:3], dy[3:6] = v, self.scene.gravity
-        dy[10:13] = np.cross(w, self.scene.inertia * w) / -self.scene.inertia
-        return dy
 
 
 def initial_state(scene: Scene, run: _Run) -> np.ndarray:

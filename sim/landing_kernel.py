@@ -4,9 +4,9 @@ State y = (r, v terrain axes; q principal -> terrain; omega principal axes; W th
 the capsule). Dormand-Prince 5(4) with error control (or fixed steps) advances it. Discrete memory lives in
 arrays the caller owns and changes only when a step is accepted (`_commit`): cell maxima, footpad positions
 and slip state, contact flags. Touchdown and lift-off are located by bisection on the step size to
-`event_tol` seconds. The loop returns to the caller on a status: the end time, free flight (no leg on the
-ground: the caller flies the capsule in closed form), a full history buffer, or an outcome it detects
-(bottoming, tip angle, body contact, quiescence).
+`event_tol` seconds. When no leg touches an axisymmetric capsule a step is the closed-form
+free flight (eq. 62-88) instead. The loop returns to the caller on a status: the end time, a full history
+buffer, or an outcome it detects (bottoming, tip angle, body contact, quiescence, the energy criterion).
 """
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ from numba import njit
 
 from . import crush_cell
 from .footpad_slip import footpad_force
-from .rigid_body import quat_matrix, quat_rate
+from .rigid_body import free_flight, quat_matrix, quat_rate
 from .stability import quiescence_momenta, quiescence_update, stable_by_energy, tipping_margins
 from .telescoping_leg import axial_set, free_footpad, leg_force
 from .vec3 import cross, mtv, mv
@@ -31,7 +31,7 @@ B4 = np.array([5179 / 57600, 0, 7571 / 16695, 393 / 640, -92097 / 339200, 187 / 
 NY = 14
 
 # Statuses returned to the caller.
-END, FLIGHT, BUFFER, BOTTOMED, TIPPED, BODY, QUIET, FAILED, STABLE = 0, 1, 2, 3, 4, 5, 6, 7, 8
+END, BUFFER, BOTTOMED, TIPPED, BODY, QUIET, FAILED, STABLE = 0, 2, 3, 4, 5, 6, 7, 8
 # Controls (float array).
 C_TFINAL, C_RTOL, C_ATOL, C_FIXED, C_MAXSTEP, C_EVENTTOL, C_STOPBOTTOM, C_TIPCOS, C_CLEAR, C_FLIGHT, \
     C_QUIET_FRAC, C_TAUS, C_PERIOD, C_ENERGY_T = range(14)
@@ -109,10 +109,17 @@ def _crossing(g_prev, g, n):
 
 
 @njit(cache=True)
-def _stage(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y, h, K, y1, err, work):
+def _stage(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y, h, K, y1, err, work, flight):
     """One Dormand-Prince step of size h from y with K[0] = f(y): y1, the error estimate, K[6] = f(y1); the
-    work arrays are left holding the legs at y1 (the last stage is evaluated there)."""
+    work arrays are left holding the legs at y1 (the last stage is evaluated there). With `flight` (no leg
+    on the ground, axisymmetric body) the step is the closed form of eq. 62-88, exact."""
     Pt, slt, dt, ft, Xt = work
+    if flight:
+        r, v, q, w = free_flight(y[0:3], y[3:6], y[6:10], y[10:13], inertia, gravity, h)
+        y1[0:3], y1[3:6], y1[6:10], y1[10:13], y1[13] = r, v, q, w, y[13]
+        err[:] = 0.0
+        rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y1, K[6], Pt, slt, dt, ft, Xt)
+        return
     for s in range(1, 7):
         yi = y.copy()
         for j in range(s):
@@ -247,10 +254,13 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
     while t < t_final - 1e-15:
         if not np.isfinite(h) or h < 1e-14:
             return FAILED, t
+        flight = ctl[C_FLIGHT] > 0.0 and np.sum(contact) == 0
+        if flight:
+            h = ctl[C_MAXSTEP]
         h = min(h, t_final - t)
-        _stage(*args, y, h, K, y1, err, work)
+        _stage(*args, y, h, K, y1, err, work, flight)
         cnt[K_RHS] += 6
-        if not fixed:
+        if not (fixed or flight):
             e = 0.0
             for c in range(NY):
                 sc = ctl[C_ATOL] + ctl[C_RTOL] * max(abs(y[c]), abs(y1[c]))
@@ -276,7 +286,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                 mid = hi - f_hi * (hi - lo) / (f_hi - f_lo)
                 if not (lo < mid < hi):
                     mid = 0.5 * (lo + hi)
-                _stage(*args, y, mid, K, y1, err, work)
+                _stage(*args, y, mid, K, y1, err, work, flight)
                 cnt[K_RHS] += 6
                 _events(cells, geo, mem, contact, tilt, armed, y1, dt, g1, False)
                 f_mid = _crossing(g_prev, g1, n)
@@ -298,7 +308,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                     side = 1
             h_acc = hi
             if h_acc != mid:
-                _stage(*args, y, h_acc, K, y1, err, work)
+                _stage(*args, y, h_acc, K, y1, err, work, flight)
                 cnt[K_RHS] += 6
                 _events(cells, geo, mem, contact, tilt, armed, y1, dt, g1, False)
         which = -1
@@ -332,15 +342,16 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
         _events(cells, geo, mem, contact, tilt, armed, y, dt, g_prev, False)
         if fixed:
             h = ctl[C_FIXED]
+        elif flight:
+            h = run_state[S_H]
         elif which < 0:
             h = min(ctl[C_MAXSTEP], h * min(5.0, 0.9 * max(e, 1e-10) ** -0.2))
-        run_state[S_H] = h
+        if not flight:
+            run_state[S_H] = h
         status = _monitor(geo, mass, inertia, gravity, bottoming, up, body, order, mem, contact, P, y, t, h_acc,
                           ctl, run_state)
         if status >= 0:
             return status, t
-        if ctl[C_FLIGHT] > 0.0 and np.sum(contact) == 0:
-            return FLIGHT, t
         if cnt[K_HIST] >= len(H_t):
             return BUFFER, t
     return END, t

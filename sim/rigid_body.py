@@ -67,28 +67,43 @@ def axis_rotation(axis: np.ndarray, angle: float) -> np.ndarray:
     return np.eye(3) + np.sin(angle) * k + (1 - np.cos(angle)) * (k @ k)
 
 
+@njit(cache=True)
+def quat_multiply(p: np.ndarray, q: np.ndarray) -> np.ndarray:
+    """Hamilton product p (x) q (the rotation q, then p)."""
+    out = np.empty(4)
+    out[0] = p[0] * q[0] - p[1] * q[1] - p[2] * q[2] - p[3] * q[3]
+    out[1] = p[0] * q[1] + p[1] * q[0] + p[2] * q[3] - p[3] * q[2]
+    out[2] = p[0] * q[2] - p[1] * q[3] + p[2] * q[0] + p[3] * q[1]
+    out[3] = p[0] * q[3] + p[1] * q[2] - p[2] * q[1] + p[3] * q[0]
+    return out
+
+
+@njit(cache=True)
 def free_flight(r0, v0, q0, omega0, inertia, gravity, t):
     """Closed-form free flight of a body with inertia (A, A, C) after time t: (r, v, q, omega).
 
     Translation is a parabola; with H = R I omega fixed in space, R(t) = Rot(H/|H|, |H| t / A) R0
-    Rot(e3, (A - C) omega3 t / A), and the body rates keep omega3 and turn (omega1, omega2) at (C - A)
-    omega3 / A.
+    Rot(e3, (A - C) omega3 t / A) (the symmetric top, AFFDL-TR-66-33 eq. 62-88), composed as quaternions;
+    the body rates keep omega3 and turn (omega1, omega2) at (C - A) omega3 / A.
     """
-    a, b, c = inertia
-    if abs(a - b) > 1e-12 * max(a, b):
+    a, c = inertia[0], inertia[2]
+    if abs(a - inertia[1]) > 1e-12 * max(a, inertia[1]):
         raise ValueError("closed-form free flight needs an axisymmetric body (A = B)")
     r = r0 + v0 * t + 0.5 * gravity * t * t
     v = v0 + gravity * t
-    R0 = quat_matrix(q0)
-    h = R0 @ (inertia * omega0)
-    hn = np.linalg.norm(h)
+    h = quat_matrix(q0) @ (inertia * omega0)
+    hn = np.sqrt(h[0] ** 2 + h[1] ** 2 + h[2] ** 2)
     spin = (a - c) * omega0[2] / a
-    space = axis_rotation(h / hn, hn * t / a) if hn > 0 else np.eye(3)
-    R = space @ R0 @ axis_rotation(np.array([0.0, 0.0, 1.0]), spin * t)
+    qs = np.array([1.0, 0.0, 0.0, 0.0])
+    if hn > 0.0:
+        half = 0.5 * hn * t / a
+        qs = np.array([np.cos(half), np.sin(half) * h[0] / hn, np.sin(half) * h[1] / hn, np.sin(half) * h[2] / hn])
+    qb = np.array([np.cos(0.5 * spin * t), 0.0, 0.0, np.sin(0.5 * spin * t)])
+    q = quat_multiply(quat_multiply(qs, q0), qb)
     lam = -spin * t                      # body rates turn opposite the relative spin
     cl, sl = np.cos(lam), np.sin(lam)
     omega = np.array([cl * omega0[0] - sl * omega0[1], sl * omega0[0] + cl * omega0[1], omega0[2]])
-    return r, v, matrix_quat(R), omega
+    return r, v, q / np.sqrt(q @ q), omega
 
 
 def roll_yaw_pitch(m: np.ndarray) -> tuple[float, float, float]:
