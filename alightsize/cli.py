@@ -73,6 +73,14 @@ def _simulate(args) -> int:
     return 1 if (args.require_success and s["outcome"] == "failed") else 0
 
 
+def _bench(args) -> int:
+    from .bench import run_bench, write_bench
+    data = run_bench(quick=args.quick, progress=lambda msg: print(msg, flush=True))
+    files = write_bench(data, Path(args.out))
+    print("wrote " + ", ".join(str(f) for f in files))
+    return 0
+
+
 def _scale(args) -> int:
     from .atomic import write_atomic
     from .scaling import table27
@@ -126,6 +134,10 @@ def parser() -> argparse.ArgumentParser:
     si.add_argument("--out", required=True, help="output folder")
     si.add_argument("--require-success", action="store_true", help="exit 1 when the landing fails numerically")
     si.set_defaults(run=_simulate)
+    b = sub.add_parser("bench", help="landing simulator speed against error, with the solve_ivp-style baseline")
+    b.add_argument("--out", required=True, help="output folder")
+    b.add_argument("--quick", action="store_true", help="fewer scenes and settings")
+    b.set_defaults(run=_bench)
     s = sub.add_parser("scale", help="test-model scaling factors (Table 27)")
     s.add_argument("--length", type=float, required=True, help="length scale, full / model")
     s.add_argument("--mass", type=float, required=True, help="mass scale, full / model")

@@ -52,7 +52,11 @@ def loading_force(d: np.ndarray, f: np.ndarray, yield_force: float, delta: float
     if delta <= 0.0:
         return 0.0
     if delta <= d[-1]:
-        return np.interp(delta, d, f)
+        i = 1
+        while d[i] < delta:
+            i += 1
+        span = d[i] - d[i - 1]
+        return f[i] if span <= 0.0 else f[i - 1] + (f[i] - f[i - 1]) * (delta - d[i - 1]) / span
     if yield_force >= 0.0:
         return yield_force
     slope = (f[-1] - f[-2]) / (d[-1] - d[-2]) if d[-1] > d[-2] else 0.0

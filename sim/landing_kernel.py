@@ -120,25 +120,27 @@ def _stage(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y, 
         err[:] = 0.0
         rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y1, K[6], Pt, slt, dt, ft, Xt)
         return
+    yi = y1                                                     # stage state, overwritten below
     for s in range(1, 7):
-        yi = y.copy()
-        for j in range(s):
-            if A[s, j] != 0.0:
-                yi += h * A[s, j] * K[j]
+        for c in range(NY):
+            acc = y[c]
+            for j in range(s):
+                acc += h * A[s, j] * K[j, c]
+            yi[c] = acc
         rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, yi, K[s], Pt, slt, dt, ft, Xt)
-    y1[:] = y
-    err[:] = 0.0
-    for j in range(7):
-        y1 += h * B5[j] * K[j]
-        err += h * (B5[j] - B4[j]) * K[j]
+    for c in range(NY):
+        acc, e = y[c], 0.0
+        for j in range(7):
+            acc += h * B5[j] * K[j, c]
+            e += h * (B5[j] - B4[j]) * K[j, c]
+        y1[c], err[c] = acc, e
 
 
 @njit(cache=True)
 def _commit(geo, cells, mu, mem, contact, P, sliding, tilt, armed, y, energy, last, work, g):
     """Accept state y: arm legs clear of their last switch, move footpads, add the step's work, update cell
-    memory. energy (n, C + 1): each cell's work (exact for the rate-free force, trapezoidal for the damper),
-    then the friction work. last (n, 2C + 3): deflections, damper forces, the in-plane push on the footpad
-    (2) and a flag that they are set."""
+    memory. energy (n, C): each cell's work (exact for the rate-free force, trapezoidal for the damper).
+    last (n, 2C + 1): deflections, damper forces and a flag that they are set."""
     Pt, slt, dt, ft, Xt = work
     cd, cf, cn, ck, cc, cy = cells
     _events(cells, geo, mem, contact, tilt, armed, y, dt, g, True)
@@ -148,11 +150,7 @@ def _commit(geo, cells, mu, mem, contact, P, sliding, tilt, armed, y, energy, la
         armed[i] = armed[i] or g[i] > ARM
         if not contact[i]:
             continue
-        fe = mv(R, Xt[i, 0], Xt[i, 1], Xt[i, 2])
-        known = last[i, 2 * C + 2] > 0.0
-        if known:                                             # friction: trapezoid of push . slide
-            energy[i, C] += 0.5 * ((-fe[0] + last[i, 2 * C]) * (Pt[i, 0] - P[i, 0])
-                                   + (-fe[1] + last[i, 2 * C + 1]) * (Pt[i, 1] - P[i, 1]))
+        known = last[i, 2 * C] > 0.0
         P[i] = Pt[i]
         sliding[i] = slt[i]
         for j in range(1 + geo[5][i]):
@@ -166,7 +164,7 @@ def _commit(geo, cells, mu, mem, contact, P, sliding, tilt, armed, y, energy, la
                 energy[i, j] += 0.5 * (damper + last[i, C + j]) * (delta - last[i, j])
             mem[i, j, 0], mem[i, j, 1] = crush_cell.commit(d, f, cy[i, j], mem[i, j, 0], mem[i, j, 1], delta)
             last[i, j], last[i, C + j] = delta, damper
-        last[i, 2 * C], last[i, 2 * C + 1], last[i, 2 * C + 2] = -fe[0], -fe[1], 1.0
+        last[i, 2 * C] = 1.0
 
 
 @njit(cache=True)
@@ -180,17 +178,16 @@ def switch(geo, cells, mem, contact, P, sliding, tilt, armed, y, which, last, wo
         _, alpha, beta, _ = leg_force(geo, cells, which, mem[which], P[which], y[0:3], R, y[3:6], y[10:13],
                                       dt[which], ft[which], Xt[which])
         contact[which], tilt[which, 0], tilt[which, 1] = 0, alpha, beta
-        last[which, 2 * C + 2] = 0.0
+        last[which, 2 * C] = 0.0
     else:
         pad = free_footpad(geo, cells, which, mem[which], tilt[which], y[0:3], R)
         P[which, 0], P[which, 1], P[which, 2] = pad[0], pad[1], 0.0
         contact[which], sliding[which] = 1, 1                   # (re)contact slides on mu_D (eq. 33)
         leg_force(geo, cells, which, mem[which], P[which], y[0:3], R, y[3:6], y[10:13], dt[which], ft[which],
                   Xt[which])
-        fe = mv(R, Xt[which, 0], Xt[which, 1], Xt[which, 2])
         for j in range(C):
             last[which, j], last[which, C + j] = dt[which, j], 0.0
-        last[which, 2 * C], last[which, 2 * C + 1], last[which, 2 * C + 2] = -fe[0], -fe[1], 1.0
+        last[which, 2 * C] = 1.0
 
 
 @njit(cache=True)

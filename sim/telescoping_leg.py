@@ -119,9 +119,10 @@ def leg_force(geo, cells, i, mem, P, r, R, v, w, defl, frc, X):
     else:
         tilt, tilt_rate, ratio = np.sin(alpha), np.cos(alpha), 1.0
     q_alpha, q_beta = 0.0, 0.0
+    cb, sb = eb[1], -eb[0]                                          # cos(beta), sin(beta)
     for j in range(n_pads[i]):
-        g = angles[i, j] - beta
-        cg, sg = np.cos(g), np.sin(g)
+        cj, sj = np.cos(angles[i, j]), np.sin(angles[i, j])
+        cg, sg = cj * cb + sj * sb, sj * cb - cj * sb               # cos, sin of (gamma_j - beta)
         dj = pad_lever[i] * tilt * cg                               # eq. 21
         rj = pad_lever[i] * (tilt_rate * cg * alpha_dot + tilt * sg * beta_dot)
         fj = cell_force(cells, i, j + 1, mem, dj, rj)

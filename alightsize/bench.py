@@ -1,0 +1,210 @@
+"""Speed against error of the landing simulator (`alightsize bench`): each scene with each method over a
+ladder of tolerances or steps, errors against a tight-tolerance reference, and the same equations under
+scipy.integrate (RK45, DOP853 stepped one accepted step at a time, memory committed between steps, events
+located on their dense output) as the baseline a user would write. JSON, HTML and a work-precision plot."""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import os
+import platform
+import time
+from pathlib import Path
+
+import numpy as np
+from scipy import integrate, optimize
+
+from sim import landing_kernel as lk
+from sim.landing import Controls, Result, _Run, initial_state, simulate
+
+from .atomic import write_atomic
+from .scene_config import SceneConfig, read_scene
+
+EXAMPLES = Path(__file__).resolve().parent.parent / "examples" / "affdl-tr-66-33" / "scenes"
+
+
+def _scenes(quick: bool) -> list[tuple[SceneConfig, float]]:
+    """(scene, simulated time): the flat drop, configuration 2 flat and configuration 1 slipping into a 20 deg
+    slope (run 12101), run for fixed times with the early stops off so every method covers the same span."""
+    cases = [(read_scene(EXAMPLES / "flat_drop.toml"), 0.12), (read_scene(EXAMPLES / "telescoping_config2.toml"), 0.3),
+             (read_scene(EXAMPLES / "telescoping_config1_run12101.toml"), 0.3)]
+    return cases[:2] if quick else cases
+
+
+def _controls(cfg: SceneConfig, t_sim: float, **kw) -> Controls:
+    return dataclasses.replace(cfg.controls, t_final=t_sim, energy_check_from=None, taus=0.0, tip_angle=np.pi,
+                               stop_on_bottoming=False, **kw)
+
+
+def _metrics(res: Result) -> dict:
+    return {"peak": float(np.max(np.abs(res.accel_g[:, 2]))), "stroke": float(np.max(res.memory[:, :, 0])),
+            "final": res.y[-1, :13].copy(), "t_end": float(res.t[-1])}
+
+
+def _errors(m: dict, ref: dict) -> dict:
+    scale = np.maximum(np.abs(ref["final"]), 1.0)
+    return {"err_peak_xdd3_rel": abs(m["peak"] - ref["peak"]) / ref["peak"],
+            "err_max_stroke_rel": abs(m["stroke"] - ref["stroke"]) / max(ref["stroke"], 1e-12),
+            "err_final_state_rel": float(np.max(np.abs(m["final"] - ref["final"]) / scale))}
+
+
+def _timed(fn, repeats: int):
+    walls, out = [], None
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        out = fn()
+        walls.append(time.perf_counter() - t0)
+    return float(np.median(walls)), out
+
+
+def scipy_landing(cfg: SceneConfig, ctl: Controls, method: str) -> tuple[dict, int, int]:
+    """The same equations (the compiled right-hand side, cell memory, slip and switching functions of the
+    simulator) stepped by scipy's OdeSolver: memory committed after each accepted step, touchdown and
+    lift-off located with brentq on the solver's dense output, the solver restarted after a switch."""
+    s = cfg.scene
+    run = _Run(s, ctl)
+    y = initial_state(s, run)
+    n = run.n
+    work, g_prev, g = run.work, np.empty(n), np.empty(n)
+    nfev = steps = 0
+    peak, t = 0.0, 0.0
+
+    def f(_t, yy):
+        dy = np.zeros(14)
+        lk.rhs(run.geo, run.cells, s.mass, s.inertia, s.gravity, run.mu, run.mem, run.contact, run.P, run.sliding,
+               yy, dy, *work)
+        return dy
+
+    def events(yy, out):
+        f(0.0, yy)
+        lk._events(run.cells, run.geo, run.mem, run.contact, run.tilt, run.armed, yy, work[2], out, False)
+        return out
+
+    Solver = {"RK45": integrate.RK45, "DOP853": integrate.DOP853}[method]
+    events(y, g_prev)
+    while t < ctl.t_final - 1e-12:
+        solver = Solver(f, t, y, ctl.t_final, rtol=ctl.rtol, atol=ctl.atol, max_step=ctl.max_step)
+        while solver.status == "running":
+            solver.step()
+            steps += 1
+            y1 = solver.y.copy()
+            events(y1, g)
+            crossed = (g_prev > 0) & (g <= 0)
+            if crossed.any():
+                dense = solver.dense_output()
+                k = int(np.argmax(crossed))
+                t_ev = optimize.brentq(lambda tt: events(dense(tt), g.copy())[k], solver.t_old, solver.t,
+                                       xtol=ctl.event_tol)
+                y1 = dense(t_ev)
+                y1[6:10] /= np.linalg.norm(y1[6:10])
+                f(t_ev, y1)
+                lk._commit(run.geo, run.cells, run.mu, run.mem, run.contact, run.P, run.sliding, run.tilt, run.armed,
+                           y1, run.energy, run.last, work, g)
+                lk.switch(run.geo, run.cells, run.mem, run.contact, run.P, run.sliding, run.tilt, run.armed, y1, k,
+                          run.last, work)
+                peak = max(peak, abs(_accel3(s, y1, f(t_ev, y1))))
+                t, y = t_ev, y1
+                events(y, g_prev)
+                break
+            y1[6:10] /= np.linalg.norm(y1[6:10])
+            f(solver.t, y1)
+            lk._commit(run.geo, run.cells, run.mu, run.mem, run.contact, run.P, run.sliding, run.tilt, run.armed, y1,
+                       run.energy, run.last, work, g)
+            peak = max(peak, abs(_accel3(s, y1, f(solver.t, y1))))
+            events(y1, g_prev)
+            t, y = solver.t, y1
+        nfev += solver.nfev
+        if solver.status == "failed":
+            break
+    return {"peak": peak, "stroke": float(np.max(run.mem[:, :, 0])), "final": y[:13].copy(), "t_end": t}, nfev, steps
+
+
+def _accel3(scene, y, dy) -> float:
+    from sim.rigid_body import quat_matrix
+    return float((quat_matrix(y[6:10]).T @ (dy[3:6] - scene.gravity))[2] / 9.80665)
+
+
+def run_bench(quick: bool = False, progress=print) -> dict:
+    ladder = [1e-3, 1e-4, 1e-5, 1e-6, 1e-7] if not quick else [1e-3, 1e-5, 1e-7]
+    fixed = [2e-4, 1e-4, 5e-5] if not quick else [1e-4]
+    scipy_ladder = [1e-3, 1e-5, 1e-7] if not quick else [1e-4]
+    repeats = 3 if not quick else 1
+    t0 = time.perf_counter()
+    cfg0, t_sim0 = _scenes(True)[0]
+    simulate(cfg0.scene, _controls(cfg0, 0.01))                      # load the compiled code
+    compile_s = time.perf_counter() - t0
+    cases = []
+    for cfg, t_sim in _scenes(quick):
+        ref = _metrics(simulate(cfg.scene, _controls(cfg, t_sim, rtol=1e-11, atol=1e-14, max_step=5e-4)))
+        progress(f"{cfg.name}: reference done")
+        runs = [("dopri5", f"rtol={r:g}", dict(rtol=r, atol=r * 1e-3)) for r in ladder]
+        runs += [("dopri5-fixed", f"h={h:g}", dict(fixed_step=h)) for h in fixed]
+        for method, setting, kw in runs:
+            ctl = _controls(cfg, t_sim, **kw)
+            wall, res = _timed(lambda: simulate(cfg.scene, ctl), repeats)
+            cases.append({"scene": cfg.name, "method": method, "setting": setting, "t_sim_s": t_sim, "wall_s": wall,
+                          "rhs_evals": res.rhs_evals, "steps": res.steps, **_errors(_metrics(res), ref), "compiled": True})
+            progress(f"  {method} {setting}: {wall * 1e3:.1f} ms, peak XDD(3) error {cases[-1]['err_peak_xdd3_rel']:.1e}")
+        for method in ("RK45", "DOP853"):
+            for r in scipy_ladder:
+                ctl = _controls(cfg, t_sim, rtol=r, atol=r * 1e-3)
+                wall, (m, nfev, steps) = _timed(lambda: scipy_landing(cfg, ctl, method), 1)
+                cases.append({"scene": cfg.name, "method": f"scipy-{method}", "setting": f"rtol={r:g}", "t_sim_s": t_sim,
+                              "wall_s": wall, "rhs_evals": nfev, "steps": steps, **_errors(m, ref), "compiled": False})
+                progress(f"  scipy-{method} rtol={r:g}: {wall * 1e3:.1f} ms, peak XDD(3) error "
+                         f"{cases[-1]['err_peak_xdd3_rel']:.1e}")
+    import numba
+    return {"schema": "alightsize.bench/1",
+            "machine": {"cores": os.cpu_count(), "python": platform.python_version(), "numpy": np.__version__,
+                        "numba": numba.__version__, "processor": platform.processor() or platform.machine()},
+            "compile_or_cache_load_s": compile_s, "cases": cases}
+
+
+def _html(data: dict) -> str:
+    from jinja2 import Environment, select_autoescape
+    env = Environment(autoescape=select_autoescape(default=True))
+    return env.from_string("""<!doctype html><meta charset="utf-8"><title>alightsize bench</title>
+<h1>Landing simulator: speed against error</h1>
+<p>{{ m.cores }} cores, Python {{ m.python }}, numpy {{ m.numpy }}, numba {{ m.numba }}. Compiled code loaded in
+{{ '%.2f' % d.compile_or_cache_load_s }} s (excluded below). Wall: median of repeated runs; errors against an rtol 1e-11
+reference of the same scene.</p><img src="work_precision.png">
+<table border=1 cellspacing=0 cellpadding=3><tr><th>scene<th>method<th>setting<th>t_sim (s)<th>wall (ms)
+<th>ms per simulated s<th>rhs evals<th>steps<th>peak XDD(3) err<th>max stroke err<th>final state err</tr>
+{% for c in d.cases %}<tr><td>{{ c.scene }}<td>{{ c.method }}<td>{{ c.setting }}<td>{{ c.t_sim_s }}
+<td>{{ '%.2f' % (c.wall_s * 1000) }}<td>{{ '%.1f' % (c.wall_s * 1000 / c.t_sim_s) }}<td>{{ c.rhs_evals }}<td>{{ c.steps }}
+<td>{{ '%.1e' % c.err_peak_xdd3_rel }}<td>{{ '%.1e' % c.err_max_stroke_rel }}<td>{{ '%.1e' % c.err_final_state_rel }}</tr>
+{% endfor %}</table>""").render(d=data, m=data["machine"])
+
+
+def _plot(data: dict, path: Path) -> None:
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    scenes = sorted({c["scene"] for c in data["cases"]})
+    fig, axes = plt.subplots(1, len(scenes), figsize=(5 * len(scenes), 4), squeeze=False)
+    for ax, scene in zip(axes[0], scenes):
+        for method in sorted({c["method"] for c in data["cases"]}):
+            pts = [(c["err_peak_xdd3_rel"], c["wall_s"] * 1000 / c["t_sim_s"]) for c in data["cases"]
+                   if c["scene"] == scene and c["method"] == method]
+            if pts:
+                e, w = zip(*pts)
+                ax.loglog(np.maximum(e, 1e-16), w, "o-", label=method)
+        ax.axvline(1e-3, color="grey", lw=0.8, ls=":")
+        ax.axhline(20, color="grey", lw=0.8, ls=":")
+        ax.set_title(scene, fontsize=9)
+        ax.set_xlabel("relative error in peak XDD(3)")
+        ax.set_ylabel("wall ms per simulated second")
+        ax.grid(alpha=0.3, which="both")
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    write_atomic(path, lambda tmp: fig.savefig(tmp, format="png", dpi=100, metadata={"Software": None}))
+    plt.close(fig)
+
+
+def write_bench(data: dict, out: Path) -> list[Path]:
+    out.mkdir(parents=True, exist_ok=True)
+    files = [write_atomic(out / "bench.json", json.dumps(data, indent=2) + "\n")]
+    _plot(data, out / "work_precision.png")
+    files += [out / "work_precision.png", write_atomic(out / "bench.html", _html(data))]
+    return files
