@@ -16,7 +16,7 @@ import numpy as np
 from scipy import integrate, optimize
 
 from sim import landing_kernel as lk
-from sim.landing import Controls, Result, _Run, initial_state, simulate
+from sim.landing import Controls, Result, _Run, accel_g, initial_state, simulate
 
 from .atomic import write_atomic
 from .scene_config import SceneConfig, read_scene
@@ -78,8 +78,24 @@ def scipy_landing(cfg: SceneConfig, ctl: Controls, method: str) -> tuple[dict, i
 
     def events(yy, out):
         f(0.0, yy)
+        return _events(yy, out)
+
+    def _events(yy, out):
+        """Event values at yy from the leg state the last evaluation of f left in `work`."""
         lk._events(run.cells, run.geo, run.mem, run.contact, run.tilt, run.armed, yy, work[2], out, False)
         return out
+
+    def accept(tt, yy, which):
+        """Commit memory at an accepted state (switching leg `which` if >= 0); the peak acceleration there."""
+        dy = f(tt, yy)
+        lk._commit(run.geo, run.cells, run.mu, run.mem, run.contact, run.P, run.sliding, run.tilt, run.armed, yy,
+                   run.energy, run.last, work, g)
+        if which >= 0:
+            lk.switch(run.geo, run.cells, run.mem, run.contact, run.P, run.sliding, run.tilt, run.armed, yy, which,
+                      run.last, work)
+            dy = f(tt, yy)
+        _events(yy, g_prev)
+        return abs(float(accel_g(yy, dy, s.gravity)[0, 2]))
 
     Solver = {"RK45": integrate.RK45, "DOP853": integrate.DOP853}[method]
     events(y, g_prev)
@@ -89,40 +105,23 @@ def scipy_landing(cfg: SceneConfig, ctl: Controls, method: str) -> tuple[dict, i
             solver.step()
             steps += 1
             y1 = solver.y.copy()
-            events(y1, g)
-            crossed = (g_prev > 0) & (g <= 0)
-            if crossed.any():
+            crossed = (g_prev > 0) & (events(y1, g) <= 0)
+            which = int(np.argmax(crossed)) if crossed.any() else -1
+            t1 = solver.t
+            if which >= 0:
                 dense = solver.dense_output()
-                k = int(np.argmax(crossed))
-                t_ev = optimize.brentq(lambda tt: events(dense(tt), g.copy())[k], solver.t_old, solver.t,
-                                       xtol=ctl.event_tol)
-                y1 = dense(t_ev)
-                y1[6:10] /= np.linalg.norm(y1[6:10])
-                f(t_ev, y1)
-                lk._commit(run.geo, run.cells, run.mu, run.mem, run.contact, run.P, run.sliding, run.tilt, run.armed,
-                           y1, run.energy, run.last, work, g)
-                lk.switch(run.geo, run.cells, run.mem, run.contact, run.P, run.sliding, run.tilt, run.armed, y1, k,
-                          run.last, work)
-                peak = max(peak, abs(_accel3(s, y1, f(t_ev, y1))))
-                t, y = t_ev, y1
-                events(y, g_prev)
-                break
+                t1 = optimize.brentq(lambda tt: events(dense(tt), g.copy())[which], solver.t_old, solver.t,
+                                     xtol=ctl.event_tol)
+                y1 = dense(t1)
             y1[6:10] /= np.linalg.norm(y1[6:10])
-            f(solver.t, y1)
-            lk._commit(run.geo, run.cells, run.mu, run.mem, run.contact, run.P, run.sliding, run.tilt, run.armed, y1,
-                       run.energy, run.last, work, g)
-            peak = max(peak, abs(_accel3(s, y1, f(solver.t, y1))))
-            events(y1, g_prev)
-            t, y = solver.t, y1
+            peak = max(peak, accept(t1, y1, which))
+            t, y = t1, y1
+            if which >= 0:
+                break                                  # restart the solver after the switch
         nfev += solver.nfev
         if solver.status == "failed":
             break
     return {"peak": peak, "stroke": float(np.max(run.mem[:, :, 0])), "final": y[:13].copy(), "t_end": t}, nfev, steps
-
-
-def _accel3(scene, y, dy) -> float:
-    from sim.rigid_body import quat_matrix
-    return float((quat_matrix(y[6:10]).T @ (dy[3:6] - scene.gravity))[2] / 9.80665)
 
 
 def run_bench(quick: bool = False, progress=print) -> dict:

@@ -10,7 +10,8 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from sim.landing import G0, Result
+from sim import crush_cell
+from sim.landing import Result, kinetic
 from sim.rigid_body import quat_matrix, roll_yaw_pitch
 
 from .atomic import write_atomic
@@ -24,6 +25,12 @@ def body_histories(cfg: SceneConfig, res: Result) -> tuple[np.ndarray, np.ndarra
     """XDD (g) and OMD (rad/s^2) in geometric body axes at every history point."""
     E = cfg.to_geometric
     return res.accel_g @ E.T, res.dy[:, 10:13] @ E.T
+
+
+def energies(cfg: SceneConfig, res: Result) -> tuple[np.ndarray, np.ndarray]:
+    """Kinetic and potential (from r = 0) energy at every history point (J)."""
+    ke = np.array([kinetic(cfg.scene, y) for y in res.y])
+    return ke, -cfg.scene.mass * res.y[:, 0:3] @ cfg.scene.gravity
 
 
 def outcome(cfg: SceneConfig, res: Result) -> tuple[str, str]:
@@ -65,7 +72,7 @@ def summary(cfg: SceneConfig, res: Result) -> dict:
         for j, cell in enumerate(leg.cells):
             dmax, fmax = res.memory[i, j]
             cells.append({"cell": cfg.cell_names[i][j], "max_deflection_m": float(dmax),
-                          "permanent_set_m": float(max(dmax - fmax / cell.k, 0.0)),
+                          "permanent_set_m": float(crush_cell.permanent_set(cell.k, dmax, fmax)),
                           "energy_J": float(res.cell_energy[i, j]), "bottomed": bool(dmax > cell.curve.bottoming)})
         legs.append({"leg": i + 1, "cells": cells,
                      "max_ground_force_N": float(np.max(np.linalg.norm(res.leg_force[:, i], axis=1)))})
@@ -98,7 +105,8 @@ def history_frame(cfg: SceneConfig, res: Result) -> pd.DataFrame:
         cols[f"omega{ax}_rad_s"] = omega[:, k]
     for k, ax in enumerate("123"):
         cols[f"omd{ax}_rad_s2"] = omd[:, k]
-    att = np.array([roll_yaw_pitch(quat_matrix(q) @ E.T) for q in res.y[:, 6:10]])
+    to_vertical = cfg.terrain_from_vertical.T
+    att = np.array([roll_yaw_pitch(to_vertical @ quat_matrix(q) @ E.T) for q in res.y[:, 6:10]])
     for k, name in enumerate(("roll", "yaw", "pitch")):
         cols[f"{name}_deg"] = np.degrees(att[:, k])
     for i, leg in enumerate(cfg.scene.legs):
@@ -113,9 +121,7 @@ def history_frame(cfg: SceneConfig, res: Result) -> pd.DataFrame:
         for k, ax in enumerate("123"):
             cols[f"{p}force{ax}_N"] = f_leg[:, k]
     cols["leg_work_J"] = res.y[:, 13]
-    ke = 0.5 * cfg.scene.mass * np.sum(res.y[:, 3:6] ** 2, axis=1) + 0.5 * np.sum(cfg.scene.inertia * res.y[:, 10:13] ** 2, axis=1)
-    cols["kinetic_J"] = ke
-    cols["potential_J"] = -cfg.scene.mass * res.y[:, 0:3] @ cfg.scene.gravity
+    cols["kinetic_J"], cols["potential_J"] = energies(cfg, res)
     df = pd.DataFrame(cols)
     if cfg.output_interval:
         grid = np.arange(res.t[0], res.t[-1] + 0.5 * cfg.output_interval, cfg.output_interval)
@@ -157,8 +163,7 @@ def plots(cfg: SceneConfig, res: Result, out: Path) -> list[Path]:
     ax.legend(fontsize=6, ncol=4)
     save(fig, "strokes.png")
     fig, ax = plt.subplots(figsize=(7, 4))
-    ke = 0.5 * cfg.scene.mass * np.sum(res.y[:, 3:6] ** 2, axis=1) + 0.5 * np.sum(cfg.scene.inertia * res.y[:, 10:13] ** 2, axis=1)
-    pe = -cfg.scene.mass * res.y[:, 0:3] @ cfg.scene.gravity
+    ke, pe = energies(cfg, res)
     ax.plot(res.t, ke, label="kinetic")
     ax.plot(res.t, pe - pe[0], label="potential (from first contact)")
     ax.plot(res.t, res.y[:, 13], label="work taken by the legs")

@@ -33,15 +33,14 @@ class SceneConfig:
     scene: Scene
     controls: Controls
     to_geometric: np.ndarray          # principal -> geometric body axes
+    terrain_from_vertical: np.ndarray  # kappa -> epsilon (eq. 1)
     output_interval: float | None
     srs_damping: float
     cell_names: tuple[tuple[str, ...], ...]
 
 
-def _vector(node: Node, name: str, dim: str, default=None) -> np.ndarray:
-    values = node.raw(name, default)
-    if values is default and default is not None:
-        return np.array(default, float)
+def _vector(node: Node, name: str, dim: str) -> np.ndarray:
+    values = node.raw(name)
     if not isinstance(values, list) or len(values) != 3:
         raise node.error(name, f"an array of three {dim} quantities", repr(values))
     return np.array([node.parse_quantity(f"{name}[{i}]", v, dim, positive=False) for i, v in enumerate(values)])
@@ -100,7 +99,7 @@ def _legs(node: Node, cells: dict[str, Node]) -> list[dict]:
         raise node.error("pad_angles", "an array of angles", repr(angles_raw))
     angles = tuple(node.parse_quantity(f"pad_angles[{i}]", a, "angle", positive=False) for i, a in enumerate(angles_raw))
     axial = node.string("axial")
-    pads = node.string("pads", "") if angles else ""
+    pads = node.string("pads") if angles else ""
     for key, name in (("axial", axial), ("pads", pads)):
         if name and name not in cells:
             raise node.error(key, "the name of a [cells.NAME] table (" + ", ".join(sorted(cells)) + ")", repr(name))
@@ -168,7 +167,7 @@ def read_scene(path: str | Path) -> SceneConfig:
     moments, to_geo = principal_axes(tensor)
     if not np.all(moments > 0):
         raise cap.error("inertia", "a positive definite tensor", f"principal moments {moments}")
-    cg = _vector(cap, "cg", "length", [0.0, 0.0, 0.0]) if cap.has("cg") else np.zeros(3)
+    cg = _vector(cap, "cg", "length") if cap.has("cg") else np.zeros(3)
     bottom = cap.quantity("bottom", "length") if cap.has("bottom") else None
     cap.string("note", "")
     cap.finish()
@@ -221,7 +220,7 @@ def read_scene(path: str | Path) -> SceneConfig:
     else:
         yaw = ini.quantity("yaw", "angle", 0.0, positive=False) if ini.has("yaw") else 0.0
         pitch = ini.quantity("pitch", "angle", 0.0, positive=False) if ini.has("pitch") else 0.0
-    rates = _vector(ini, "rates", "angular_velocity", [0.0, 0.0, 0.0]) if ini.has("rates") else np.zeros(3)
+    rates = _vector(ini, "rates", "angular_velocity") if ini.has("rates") else np.zeros(3)
     ini.string("note", "")
     ini.finish()
     lkx = rot(2, roll) @ rot(1, yaw) @ rot(0, pitch)    # chi -> kappa (eq. 2, FUNEV LKX)
@@ -244,7 +243,7 @@ def read_scene(path: str | Path) -> SceneConfig:
     scene = Scene(mass, moments, tuple(legs), lepk @ np.array([0.0, 0.0, -G0]), lepk @ vel, q0, to_geo.T @ rates,
                   mu_s if mu_s is not None else 1.5e6, mu_d if mu_d is not None else 1.0e6, to_geo.T @ np.array([0.0, 0, 1]),
                   body)
-    return SceneConfig(path, name, title, scene, c, to_geo, interval, srs_damping, tuple(names))
+    return SceneConfig(path, name, title, scene, c, to_geo, lepk, interval, srs_damping, tuple(names))
 
 
 def _controls(node: Node | None, mass: float, legs: list[TelescopingLeg]) -> Controls:

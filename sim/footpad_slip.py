@@ -26,12 +26,11 @@ MAX_REFINE = 100
 
 
 @njit(cache=True)
-def _excess(geo, cells, i, mem, mu, P, r, R, v, w, defl, frc, X):
-    """(FE12 - mu FE3, FE12 + |FE3|, cells' power, alpha, beta, al) with the footpad at P."""
-    power, alpha, beta, al = leg_force(geo, cells, i, mem, P, r, R, v, w, defl, frc, X)
+def _ground(geo, cells, i, mem, P, r, R, v, w, defl, frc, X):
+    """(FE12, FE3, FE1, FE2, cells' power, alpha, beta) with the footpad at P."""
+    power, alpha, beta, _ = leg_force(geo, cells, i, mem, P, r, R, v, w, defl, frc, X)
     fe = mv(R, X[0], X[1], X[2])                                # eq. 31
-    fe12 = np.sqrt(fe[0] * fe[0] + fe[1] * fe[1])               # eq. 32
-    return fe12 - mu * max(fe[2], 0.0), fe12 + abs(fe[2]), power, alpha, beta, al
+    return np.sqrt(fe[0] * fe[0] + fe[1] * fe[1]), fe[2], fe[0], fe[1], power, alpha, beta   # eq. 32
 
 
 @njit(cache=True)
@@ -39,8 +38,8 @@ def _at(geo, cells, i, mem, mu, alpha, beta, r, R, v, w, P, defl, frc, X):
     """Excess and scale with the footpad where the ray (alpha, beta) meets the terrain; valid flag."""
     if not ground_point(geo, i, alpha, beta, r, R, P):
         return -1.0, 0.0, False
-    h, scale, _, _, _, _ = _excess(geo, cells, i, mem, mu, P, r, R, v, w, defl, frc, X)
-    return h, scale, True
+    fe12, fe3, _, _, _, _, _ = _ground(geo, cells, i, mem, P, r, R, v, w, defl, frc, X)
+    return fe12 - mu * max(fe3, 0.0), fe12 + abs(fe3), True
 
 
 @njit(cache=True)
@@ -48,11 +47,10 @@ def footpad_force(geo, cells, i, mem, P0, sliding, mu_s, mu_d, r, R, v, w, P, de
     """Footpad position P and the leg's forces (written to defl, frc, X) with friction; returns
     (sliding 0/1, cells' power, alpha, beta). P0 is the footpad at the last accepted step."""
     P[:] = P0
-    mu = mu_d if sliding else mu_s                              # eq. 33-34
-    h0, scale0, power, alpha0, beta, al = _excess(geo, cells, i, mem, mu, P, r, R, v, w, defl, frc, X)
-    if h0 <= 0.0:
+    fe12, fe3, fe1, fe2, power, alpha0, beta = _ground(geo, cells, i, mem, P, r, R, v, w, defl, frc, X)
+    if fe12 <= (mu_d if sliding else mu_s) * max(fe3, 0.0):    # eq. 33-34: holds
         return 0, power, alpha0, beta
-    h0, scale0, _, _, _, _ = _excess(geo, cells, i, mem, mu_d, P, r, R, v, w, defl, frc, X)
+    h0 = fe12 - mu_d * max(fe3, 0.0)
     if h0 <= 0.0:                                               # static limit exceeded, dynamic one not
         return 1, power, alpha0, beta
     # Direction of the slide: the leg's in-plane push on the footpad, along the alpha path.
@@ -60,9 +58,8 @@ def footpad_force(geo, cells, i, mem, P0, sliding, mu_s, mu_d, r, R, v, w, P, de
     eps = 1e-7
     ok_a = ground_point(geo, i, alpha0 + eps, beta, r, R, Pa)
     ok_b = ground_point(geo, i, alpha0 - eps, beta, r, R, Pb)
-    fe = mv(R, X[0], X[1], X[2])
     sgn = 1.0
-    if ok_a and ok_b and -(fe[0] * (Pa[0] - Pb[0]) + fe[1] * (Pa[1] - Pb[1])) < 0.0:
+    if ok_a and ok_b and -(fe1 * (Pa[0] - Pb[0]) + fe2 * (Pa[1] - Pb[1])) < 0.0:
         sgn = -1.0
     # Expand until the excess changes sign (or the ray leaves the terrain).
     a_lo, h_lo = alpha0, h0
@@ -102,5 +99,5 @@ def footpad_force(geo, cells, i, mem, P0, sliding, mu_s, mu_d, r, R, v, w, P, de
             side = -1
     a_end = a_hi if ok_hi else a_lo
     ground_point(geo, i, a_end, beta, r, R, P)
-    h, scale, power, alpha, beta_end, al = _excess(geo, cells, i, mem, mu_d, P, r, R, v, w, defl, frc, X)
+    _, _, _, _, power, alpha, beta_end = _ground(geo, cells, i, mem, P, r, R, v, w, defl, frc, X)
     return 1, power, alpha, beta_end

@@ -77,7 +77,6 @@ class Result:
     footpad: np.ndarray                # (n, legs, 3) terrain axes
     contact: np.ndarray                # (n, legs)
     status: str
-    reason: str
     bottomed: tuple | None             # (time, leg, cell) of the first bottoming
     cell_energy: np.ndarray            # (legs, cells) J
     memory: np.ndarray                 # (legs, cells, 2) final dmax, fmax
@@ -87,13 +86,19 @@ class Result:
     wall_s: float
     energy: dict
 
+    gravity: np.ndarray
+
     @property
     def accel_g(self) -> np.ndarray:
-        """CG acceleration less gravity (what an accelerometer reads) in principal axes, multiples of g0."""
-        g = self.dy[:, 3:6] - self._gravity
-        return np.einsum("nji,nj->ni", np.array([quat_matrix(q) for q in self.y[:, 6:10]]), g) / G0
+        return accel_g(self.y, self.dy, self.gravity)
 
-    _gravity: np.ndarray = field(default=None, repr=False)
+
+def accel_g(y: np.ndarray, dy: np.ndarray, gravity: np.ndarray) -> np.ndarray:
+    """CG acceleration less gravity (what an accelerometer reads) in principal axes, multiples of g0, for
+    states y and derivatives dy (rows)."""
+    y, dy = np.atleast_2d(y), np.atleast_2d(dy)
+    R = np.array([quat_matrix(q) for q in y[:, 6:10]])
+    return np.einsum("nji,nj->ni", R, dy[:, 3:6] - gravity) / G0
 
 
 STATUS = {lk.END: "end", lk.BOTTOMED: "bottomed", lk.TIPPED: "tipped", lk.BODY: "body_contact",
@@ -236,7 +241,7 @@ def simulate(scene: Scene, ctl: Controls) -> Result:
     rs = run.run_state
     bottomed = (float(rs[lk.S_BOT_T]), int(rs[lk.S_BOT_LEG]), int(rs[lk.S_BOT_CELL])) if rs[lk.S_BOT_T] >= 0 else None
     res = Result(run.H_t[:k].copy(), Y, run.H_dy[:k].copy(), run.H_d[:k].copy(), run.H_f[:k].copy(),
-                 run.H_X[:k].copy(), run.H_P[:k].copy(), run.H_c[:k].copy(), STATUS[status], "", bottomed, cell,
+                 run.H_X[:k].copy(), run.H_P[:k].copy(), run.H_c[:k].copy(), STATUS[status], bottomed, cell,
                  run.mem.copy(), int(run.cnt[lk.K_STEPS]), int(run.cnt[lk.K_REJECTED]),
                  int(run.cnt[lk.K_RHS]), wall, en, scene.gravity)
     return res

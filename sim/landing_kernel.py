@@ -275,7 +275,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
         h_acc = h
         if _crossing(g_prev, g1, n) < np.inf:
             # The earliest event: Illinois false position on the step size, each trial a real step.
-            lo, hi, f_lo, f_hi, side, mid = 0.0, h, 1.0, _crossing(g_prev, g1, n), 0, -1.0
+            lo, hi, f_lo, f_hi, side, mid = 0.0, h, np.inf, _crossing(g_prev, g1, n), 0, -1.0
             for i in range(n):
                 if g_prev[i] > 0.0 and g1[i] <= 0.0:
                     f_lo = min(f_lo, g_prev[i])

@@ -107,9 +107,9 @@ def free_flight(r0, v0, q0, omega0, inertia, gravity, t):
 
 
 def roll_yaw_pitch(m: np.ndarray) -> tuple[float, float, float]:
-    """(roll, yaw, pitch) of a body -> terrain matrix for the 3-2-1 sequence m = R3(pitch) R2(yaw) R1(roll)
-    (angles about the 1, 2, 3 axes; eq. 2 as FUNEV writes LKX)."""
+    """(roll, yaw, pitch) of a geometric-body -> vertical (kappa) matrix m = R3(roll) R2(yaw) R1(pitch): the
+    3-2-1 sequence about chi-3, chi-2, chi-1 (eq. 2 as FUNEV writes LKX)."""
     yaw = float(np.arcsin(np.clip(-m[2, 0], -1.0, 1.0)))
-    roll = float(np.arctan2(m[2, 1], m[2, 2]))
-    pitch = float(np.arctan2(m[1, 0], m[0, 0]))
+    roll = float(np.arctan2(m[1, 0], m[0, 0]))
+    pitch = float(np.arctan2(m[2, 1], m[2, 2]))
     return roll, yaw, pitch

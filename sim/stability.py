@@ -92,41 +92,6 @@ QUIESCENCE_FRACTION = 0.025                 # AFFDL-TR-66-33 main program, QUIVE
 
 
 @njit(cache=True)
-def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    out = np.empty(3)
-    out[0] = a[1] * b[2] - a[2] * b[1]
-    out[1] = a[2] * b[0] - a[0] * b[2]
-    out[2] = a[0] * b[1] - a[1] * b[0]
-    return out
-
-
-@njit(cache=True)
-def _dot(a: np.ndarray, b: np.ndarray) -> float:
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-
-
-@njit(cache=True)
-def _norm(a: np.ndarray) -> float:
-    return math.sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2])
-
-
-@njit(cache=True)
-def _matvec(m: np.ndarray, x: np.ndarray) -> np.ndarray:
-    out = np.empty(3)
-    for i in range(3):
-        out[i] = m[i, 0] * x[0] + m[i, 1] * x[1] + m[i, 2] * x[2]
-    return out
-
-
-@njit(cache=True)
-def _tmatvec(m: np.ndarray, x: np.ndarray) -> np.ndarray:
-    out = np.empty(3)
-    for i in range(3):
-        out[i] = m[0, i] * x[0] + m[1, i] * x[1] + m[2, i] * x[2]
-    return out
-
-
-@njit(cache=True)
 def _orientation(pads: np.ndarray, up: np.ndarray) -> float:
     """+1 if the pads run counter-clockwise seen from above (or are degenerate: 2 or collinear), else -1."""
     n = pads.shape[0]
@@ -134,7 +99,7 @@ def _orientation(pads: np.ndarray, up: np.ndarray) -> float:
     scale = 0.0
     for i in range(n):
         j = (i + 1) % n
-        area += _dot(_cross(pads[i] - pads[0], pads[j] - pads[0]), up)
+        area += np.dot(np.cross(pads[i] - pads[0], pads[j] - pads[0]), up)
         for k in range(3):
             scale = max(scale, abs(pads[i, k] - pads[0, k]))
     return -1.0 if area < -1e-12 * scale * scale else 1.0
@@ -149,15 +114,15 @@ def edge_geometry(r: np.ndarray, p_i: np.ndarray, p_j: np.ndarray, up: np.ndarra
     sense = +1 for pads counter-clockwise seen from above (outward normal e x up), -1 for clockwise.
     """
     d = p_j - p_i
-    e = d / _norm(d)
+    e = d / np.linalg.norm(d)
     rel = r - p_i
-    hvec = rel - _dot(rel, e) * e
-    h = _norm(hvec)
+    hvec = rel - np.dot(rel, e) * e
+    h = np.linalg.norm(hvec)
     # AFFDL-TR-66-33 eq. 93 generalised: rise = h |up_perp| - hvec.up = |up_perp| h (1 - cos delta)
-    up_perp = _norm(up - _dot(up, e) * e)
-    rise = h * up_perp - _dot(hvec, up)
+    up_perp = np.linalg.norm(up - np.dot(up, e) * e)
+    rise = h * up_perp - np.dot(hvec, up)
     rise = max(rise, 0.0)                      # rounding: the top of the circle is never below the CG
-    if sense * _dot(hvec, _cross(e, up)) > 0.0:   # beyond the vertical plane through the edge
+    if sense * np.dot(hvec, np.cross(e, up)) > 0.0:   # beyond the vertical plane through the edge
         rise = -rise
     return e, hvec, h, rise
 
@@ -176,30 +141,30 @@ def tipping_margins(r: np.ndarray, v: np.ndarray, R: np.ndarray, omega: np.ndarr
     """
     n = pads.shape[0]
     out = np.empty(n)
-    g = _norm(gravity)
+    g = np.linalg.norm(gravity)
     up = -gravity / g
     sense = _orientation(pads, up)
-    speed = _norm(v)
-    spin = _norm(omega)
-    h_cg = _matvec(R, inertia * omega)              # angular momentum about the CG, terrain axes
+    speed = np.linalg.norm(v)
+    spin = np.linalg.norm(omega)
+    h_cg = np.dot(R, inertia * omega)              # angular momentum about the CG, terrain axes
     for k in range(n):
         p_i = pads[k]
         p_j = pads[(k + 1) % n]
-        if _norm(p_j - p_i) <= 0.0:
+        if np.linalg.norm(p_j - p_i) <= 0.0:
             out[k] = -np.inf
             continue
         e, hvec, h, rise = edge_geometry(r, p_i, p_j, up, sense)
         if h <= 0.0:
             out[k] = -np.inf
             continue
-        eb = _tmatvec(R, e)
+        eb = np.dot(R.T, e)
         i_e = inertia[0] * eb[0] ** 2 + inertia[1] * eb[1] ** 2 + inertia[2] * eb[2] ** 2
         i_edge = i_e + mass * h * h            # parallel axes
         if conservative:
             gamma_dot = speed / h + spin       # AFFDL-TR-66-33 eq. 89
             ke = 0.5 * i_edge * gamma_dot * gamma_dot   # AFFDL-TR-66-33 eq. 90 (rotational term)
         else:
-            h_e = _dot(e, h_cg + mass * _cross(hvec, v))   # angular momentum about the edge
+            h_e = np.dot(e, h_cg + mass * np.cross(hvec, v))   # angular momentum about the edge
             ke = 0.5 * h_e * h_e / i_edge
         out[k] = mass * g * rise - ke          # AFFDL-TR-66-33 eq. 92-93 as an energy balance
     return out
@@ -227,14 +192,14 @@ def tipped_by_energy(margins: np.ndarray) -> bool:
 @njit(cache=True)
 def nutation_angle(R: np.ndarray, gravity: np.ndarray) -> float:
     """Angle (rad) between the roll axis (principal x3) and the vertical; AFFDL-TR-66-33 Sec. V.H, Theta."""
-    c = -(R[0, 2] * gravity[0] + R[1, 2] * gravity[1] + R[2, 2] * gravity[2]) / _norm(gravity)
+    c = -(R[0, 2] * gravity[0] + R[1, 2] * gravity[1] + R[2, 2] * gravity[2]) / np.linalg.norm(gravity)
     return math.acos(min(1.0, max(-1.0, c)))
 
 
 @njit(cache=True)
 def tipped_by_nutation(R: np.ndarray, gravity: np.ndarray, theta_critical: float) -> bool:
     """The report's tumbling verdict: cos Theta = cos P cos Y <= cos Theta_crit (main program, stmt 367)."""
-    c = -(R[0, 2] * gravity[0] + R[1, 2] * gravity[1] + R[2, 2] * gravity[2]) / _norm(gravity)
+    c = -(R[0, 2] * gravity[0] + R[1, 2] * gravity[1] + R[2, 2] * gravity[2]) / np.linalg.norm(gravity)
     return not c > math.cos(theta_critical)
 
 
@@ -247,12 +212,12 @@ def report_edge_geometry(xi_i: np.ndarray, xi_j: np.ndarray) -> tuple[float, flo
     unsigned distance D = sqrt(|zeta(i)|^2 - h^2) from pad i to the foot of h, i.e. assumes the foot lies on
     the side of pad i+1; we use the signed distance, which is the same whenever that holds.
     """
-    xim = _dot(xi_i, xi_i)
+    xim = np.dot(xi_i, xi_i)
     d = xi_j - xi_i
-    dxi = _dot(d, d)
-    h2 = xim + (xim + dxi - _dot(xi_j, xi_j)) ** 2 / (-4.0 * dxi)     # AFFDL-TR-66-33 eq. 94 (QUIMOT)
+    dxi = np.dot(d, d)
+    h2 = xim + (xim + dxi - np.dot(xi_j, xi_j)) ** 2 / (-4.0 * dxi)     # AFFDL-TR-66-33 eq. 94 (QUIMOT)
     h = math.sqrt(max(h2, 0.0))
-    t = -_dot(xi_i, d) / math.sqrt(dxi)                                # signed D of QUIMOT
+    t = -np.dot(xi_i, d) / math.sqrt(dxi)                                # signed D of QUIMOT
     eta = xi_i[2] + t * d[2] / math.sqrt(dxi)                          # AFFDL-TR-66-33 eq. 95, eta_i
     tau = math.asin(min(1.0, max(-1.0, -eta / h)))                     # AFFDL-TR-66-33 eq. 95
     return h, tau

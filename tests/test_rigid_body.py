@@ -22,8 +22,8 @@ def test_quaternion_matrix_round_trip():
 
 def test_roll_yaw_pitch_321():
     roll, yaw, pitch = 0.3, -0.2, 1.1
-    m = axis_rotation(np.array([0, 0, 1.0]), pitch) @ axis_rotation(np.array([0, 1.0, 0]), yaw) \
-        @ axis_rotation(np.array([1.0, 0, 0]), roll)
+    m = axis_rotation(np.array([0, 0, 1.0]), roll) @ axis_rotation(np.array([0, 1.0, 0]), yaw) \
+        @ axis_rotation(np.array([1.0, 0, 0]), pitch)          # LKX = R3(roll) R2(yaw) R1(pitch), eq. 2
     assert np.allclose(roll_yaw_pitch(m), (roll, yaw, pitch), atol=1e-14)
 
 
