@@ -61,12 +61,13 @@ def _timed(fn, repeats: int):
 def scipy_landing(cfg: SceneConfig, ctl: Controls, method: str) -> tuple[dict, int, int]:
     """The same equations (the compiled right-hand side, cell memory, slip and switching functions of the
     simulator) stepped by scipy's OdeSolver: memory committed after each accepted step, touchdown and
-    lift-off located with brentq on the solver's dense output, the solver restarted after a switch."""
+    lift-off and stick-to-slip located with brentq on the solver's dense output, the solver restarted after a
+    switch."""
     s = cfg.scene
     run = _Run(s, ctl)
     y = initial_state(s, run)
     n = run.n
-    work, g_prev, g = run.work, np.empty(n), np.empty(n)
+    work, g_prev, g = run.work, np.empty(2 * n), np.empty(2 * n)
     nfev = steps = 0
     peak, t = 0.0, 0.0
 
@@ -82,17 +83,20 @@ def scipy_landing(cfg: SceneConfig, ctl: Controls, method: str) -> tuple[dict, i
 
     def _events(yy, out):
         """Event values at yy from the leg state the last evaluation of f left in `work`."""
-        lk._events(run.cells, run.geo, run.mem, run.contact, run.tilt, run.armed, yy, work[2], out, False)
+        lk._events(run.cells, run.geo, run.mu, run.mem, run.contact, run.sliding, run.tilt, run.armed, yy, work[2],
+                   work[5], out, False)
         return out
 
     def accept(tt, yy, which):
-        """Commit memory at an accepted state (switching leg `which` if >= 0); the peak acceleration there."""
+        """Commit memory at an accepted state (event `which` if >= 0: a contact switch below n, a slide from
+        n on, which the commit starts); the peak acceleration there."""
         dy = f(tt, yy)
-        lk._commit(run.geo, run.cells, run.mu, run.mem, run.contact, run.P, run.sliding, run.tilt, run.armed, yy,
-                   run.energy, run.last, work, g)
-        if which >= 0:
+        started = lk._commit(run.geo, run.cells, run.mu, run.mem, run.contact, run.P, run.sliding, run.tilt,
+                             run.armed, yy, run.energy, run.last, work, g)
+        if 0 <= which < n:
             lk.switch(run.geo, run.cells, run.mem, run.contact, run.P, run.sliding, run.tilt, run.armed, yy, which,
                       run.last, work)
+        if which >= 0 or started:
             dy = f(tt, yy)
         _events(yy, g_prev)
         return abs(float(accel_g(yy, dy, s.gravity)[0, 2]))
@@ -112,6 +116,8 @@ def scipy_landing(cfg: SceneConfig, ctl: Controls, method: str) -> tuple[dict, i
                 dense = solver.dense_output()
                 t1 = optimize.brentq(lambda tt: events(dense(tt), g.copy())[which], solver.t_old, solver.t,
                                      xtol=ctl.event_tol)
+                if events(dense(t1), g.copy())[which] > 0:   # take the side past the crossing
+                    t1 = min(t1 + ctl.event_tol, solver.t)
                 y1 = dense(t1)
             y1[6:10] /= np.linalg.norm(y1[6:10])
             peak = max(peak, accept(t1, y1, which))

@@ -2,15 +2,25 @@
 
 The ground force is first computed with the footpad where it was at the last accepted step. If its in-plane
 part FE12 exceeds the potential friction force (mu_S FE3 while sticking, mu_D FE3 while sliding; eq. 32-34),
-the footpad slides: as in the report, the leg's tilt alpha is varied at fixed beta, with the footpad kept in
-the terrain plane (eq. 35-37), until FE12 = mu_D FE3.
+the footpad slides, kept in the terrain plane (eq. 35-37), until FE12 = mu_D FE3.
+
+Departure from the report: SLIP varies the leg's tilt alpha at fixed beta. That path is undefined at
+alpha = 0 (a leg hanging straight at touchdown, beta undefined) and cannot follow a push across the beta
+plane, where it wanders far from the held position looking for a root. Here the footpad moves along a
+straight line in the terrain plane, in the direction the leg pushes it (-FE12, the direction friction
+opposes), which is defined whatever the tilt.
+
+A sticking footpad whose static limit is exceeded inside an integration step is held (`hold`) when
+mu_S > mu_D: the force would drop from mu_S FE3 to mu_D FE3 there, so the step loop locates the crossing of
+the margin mu_S FE3 - FE12 as an event and starts the slide on a step boundary.
 
 The report bracketed the crossing but lost runs when the crossing moved near lift-off ("ND", Table 4). Here
-the search always brackets: alpha moves from the held position in the direction the leg pushes the
-footpad, with growing steps, until FE12 <= mu_D FE3 or the leg's ray leaves the terrain. Along that path the
-leg either meets the friction cone or unloads (both forces vanish as the footpad runs toward the horizon,
-where FE12 = mu_D FE3 = 0), so a sign change exists; false position with the Illinois modification then
-closes on it. The answer is always a valid contact point on the friction-feasible side of the crossing.
+the search always brackets: the footpad moves from the held position with growing steps until
+FE12 <= mu_D FE3 or it leaves the leg's reach (a leg longer than its free length, axial deflection short of
+the permanent set, would have lifted off; every direction in the plane leaves the reach within two leg
+lengths), where it counts as infeasible. Bisection while one end is out of reach, then false position with
+the Illinois modification, closes on the crossing; the answer is always a contact point within reach on the
+friction-feasible side, or the edge of the reach (the lift-off event then takes over).
 """
 
 from __future__ import annotations
@@ -18,11 +28,12 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from .telescoping_leg import ground_point, leg_force
+from .telescoping_leg import axial_set, leg_force
 from .vec3 import mv
 
-MAX_EXPAND = 60
+MAX_EXPAND = 200
 MAX_REFINE = 100
+FLOOR = 1e-6        # N: in-plane force below this never starts a slide (round-off at zero load)
 
 
 @njit(cache=True)
@@ -34,70 +45,77 @@ def _ground(geo, cells, i, mem, P, r, R, v, w, defl, frc, X):
 
 
 @njit(cache=True)
-def _at(geo, cells, i, mem, mu, alpha, beta, r, R, v, w, P, defl, frc, X):
-    """Excess and scale with the footpad where the ray (alpha, beta) meets the terrain; valid flag."""
-    if not ground_point(geo, i, alpha, beta, r, R, P):
-        return -1.0, 0.0, False
+def _at(geo, cells, i, mem, mu, P0, d0, d1, s, r, R, v, w, P, defl, frc, X):
+    """Excess FE12 - mu FE3 and force scale with the footpad at P0 + s d; False out of the leg's reach."""
+    P[0], P[1], P[2] = P0[0] + s * d0, P0[1] + s * d1, 0.0
     fe12, fe3, _, _, _, _, _ = _ground(geo, cells, i, mem, P, r, R, v, w, defl, frc, X)
+    if defl[0] < axial_set(cells, i, mem):
+        return -1.0, 0.0, False
     return fe12 - mu * max(fe3, 0.0), fe12 + abs(fe3), True
 
 
 @njit(cache=True)
-def footpad_force(geo, cells, i, mem, P0, sliding, mu_s, mu_d, r, R, v, w, P, defl, frc, X, tol=1e-12):
+def footpad_force(geo, cells, i, mem, P0, sliding, hold, mu_s, mu_d, r, R, v, w, P, defl, frc, X, tol=1e-12):
     """Footpad position P and the leg's forces (written to defl, frc, X) with friction; returns
-    (sliding 0/1, cells' power, alpha, beta). P0 is the footpad at the last accepted step."""
+    (sliding 0/1, cells' power, alpha, beta, static margin mu_S FE3 - FE12 at P0, reach deficit). P0 is the
+    footpad at the last accepted step; with `hold` a sticking footpad stays at P0 whatever the margin. The
+    reach deficit (m) is 0 unless the slide ended at the edge of the leg's reach with friction still
+    exceeded: then it is the excess there over the axial unloading rate, so that axial compression less
+    the deficit falls through zero continuously when the last feasible position leaves the reach (the leg
+    lifts off there)."""
     P[:] = P0
-    fe12, fe3, fe1, fe2, power, alpha0, beta = _ground(geo, cells, i, mem, P, r, R, v, w, defl, frc, X)
-    if fe12 <= (mu_d if sliding else mu_s) * max(fe3, 0.0):    # eq. 33-34: holds
-        return 0, power, alpha0, beta
+    fe12, fe3, fe1, fe2, power, alpha, beta = _ground(geo, cells, i, mem, P, r, R, v, w, defl, frc, X)
+    margin = mu_s * max(fe3, 0.0) - fe12
+    if (hold and not sliding) or fe12 <= (mu_d if sliding else mu_s) * max(fe3, 0.0) + FLOOR:   # eq. 33-34
+        return 0, power, alpha, beta, margin, 0.0
     h0 = fe12 - mu_d * max(fe3, 0.0)
     if h0 <= 0.0:                                               # static limit exceeded, dynamic one not
-        return 1, power, alpha0, beta
-    # Direction of the slide: the leg's in-plane push on the footpad, along the alpha path.
-    Pa, Pb = np.empty(3), np.empty(3)
-    eps = 1e-7
-    ok_a = ground_point(geo, i, alpha0 + eps, beta, r, R, Pa)
-    ok_b = ground_point(geo, i, alpha0 - eps, beta, r, R, Pb)
-    sgn = 1.0
-    if ok_a and ok_b and -(fe1 * (Pa[0] - Pb[0]) + fe2 * (Pa[1] - Pb[1])) < 0.0:
-        sgn = -1.0
-    # Expand until the excess changes sign (or the ray leaves the terrain).
-    a_lo, h_lo = alpha0, h0
-    step = 1e-4
-    a_hi, h_hi, ok_hi = alpha0, h0, True
+        return 1, power, alpha, beta, margin, 0.0
+    d0, d1 = -fe1 / fe12, -fe2 / fe12                           # the leg's push on the footpad
+    # Expand until the excess changes sign or the footpad leaves the leg's reach: steps growing fourfold, or
+    # just past the secant's root when that is nearer, so that the nearest crossing (the one continuous with
+    # the held position) is not stepped over.
+    reach = geo[2][i]
+    s_prev, h_prev, s_lo, h_lo = 0.0, h0, 0.0, h0
+    step = 1e-6 * reach
+    s_hi, h_hi, ok_hi = 0.0, h0, True
     for _ in range(MAX_EXPAND):
-        a_hi = alpha0 + sgn * step
-        h_hi, _, ok_hi = _at(geo, cells, i, mem, mu_d, a_hi, beta, r, R, v, w, P, defl, frc, X)
+        s_hi = s_lo + step
+        if h_lo < h_prev:
+            root = s_lo + h_lo * (s_lo - s_prev) / (h_prev - h_lo)
+            s_hi = min(s_hi, s_lo + 1.2 * (root - s_lo))
+        h_hi, _, ok_hi = _at(geo, cells, i, mem, mu_d, P0, d0, d1, s_hi, r, R, v, w, P, defl, frc, X)
         if h_hi <= 0.0:
             break
-        a_lo, h_lo = a_hi, h_hi
-        step *= 4.0
-    # Refine: bisection while an end is off the terrain, then Illinois false position.
+        s_prev, h_prev, s_lo, h_lo = s_lo, h_lo, s_hi, h_hi
+        step = 4.0 * (s_lo - s_prev)
+    # Refine: bisection while the far end is out of reach, then Illinois false position.
     side = 0
     for _ in range(MAX_REFINE):
-        if abs(a_hi - a_lo) <= tol:
+        if s_hi - s_lo <= tol * reach:
             break
         if ok_hi:
-            a_m = a_hi - h_hi * (a_hi - a_lo) / (h_hi - h_lo)
-            if not (min(a_lo, a_hi) < a_m < max(a_lo, a_hi)):
-                a_m = 0.5 * (a_lo + a_hi)
+            s_m = s_hi - h_hi * (s_hi - s_lo) / (h_hi - h_lo)
+            if not (s_lo < s_m < s_hi):
+                s_m = 0.5 * (s_lo + s_hi)
         else:
-            a_m = 0.5 * (a_lo + a_hi)
-        h_m, scale_m, ok_m = _at(geo, cells, i, mem, mu_d, a_m, beta, r, R, v, w, P, defl, frc, X)
+            s_m = 0.5 * (s_lo + s_hi)
+        h_m, scale_m, ok_m = _at(geo, cells, i, mem, mu_d, P0, d0, d1, s_m, r, R, v, w, P, defl, frc, X)
         if ok_m and abs(h_m) <= tol * (scale_m + 1.0):
-            a_lo, a_hi, h_hi, ok_hi = a_m, a_m, h_m, True
+            s_lo, s_hi, ok_hi = s_m, s_m, True
             break
         if h_m > 0.0:
-            a_lo, h_lo = a_m, h_m
+            s_lo, h_lo = s_m, h_m
             if side == 1 and ok_hi:
                 h_hi *= 0.5
             side = 1
         else:
-            a_hi, h_hi, ok_hi = a_m, h_m, ok_m
+            s_hi, h_hi, ok_hi = s_m, h_m, ok_m
             if side == -1:
                 h_lo *= 0.5
             side = -1
-    a_end = a_hi if ok_hi else a_lo
-    ground_point(geo, i, a_end, beta, r, R, P)
-    _, _, _, _, power, alpha, beta_end = _ground(geo, cells, i, mem, P, r, R, v, w, defl, frc, X)
-    return 1, power, alpha, beta_end
+    s_end = s_hi if ok_hi else s_lo
+    P[0], P[1], P[2] = P0[0] + s_end * d0, P0[1] + s_end * d1, 0.0
+    fe12, fe3, _, _, power, alpha, beta = _ground(geo, cells, i, mem, P, r, R, v, w, defl, frc, X)
+    deficit = 0.0 if ok_hi else max(fe12 - mu_d * max(fe3, 0.0), 0.0) / cells[3][i, 0]
+    return 1, power, alpha, beta, margin, deficit

@@ -83,6 +83,8 @@ class Result:
     steps: int
     rejected: int
     rhs_evals: int
+    events: int                        # located events (touchdown, lift-off, stick-to-slip)
+    event_trials: int                  # trial steps spent locating them
     wall_s: float
     energy: dict
 
@@ -130,8 +132,9 @@ class _Run:
         self.armed = np.zeros(n, np.int64)
         self.energy = np.zeros((n, C))
         self.last = np.zeros((n, 2 * C + 1))
-        self.work = (np.zeros((n, 3)), np.zeros(n, np.int64), np.zeros((n, C)), np.zeros((n, C)), np.zeros((n, 3)))
-        self.cnt = np.zeros(4, np.int64)
+        self.work = (np.zeros((n, 3)), np.zeros(n, np.int64), np.zeros((n, C)), np.zeros((n, C)), np.zeros((n, 3)),
+                     np.zeros((n, 2)))
+        self.cnt = np.zeros(6, np.int64)
         self.run_state = np.array([ctl.first_step, 0.0, 0.0, -1.0, -1.0, -1.0])
         self.ctl_arr = np.array([ctl.t_final, ctl.rtol, ctl.atol, ctl.fixed_step or 0.0, ctl.max_step, ctl.event_tol,
                                  float(ctl.stop_on_bottoming), np.cos(ctl.tip_angle), ctl.body_clearance,
@@ -160,7 +163,7 @@ class _Run:
         k = int(self.cnt[lk.K_HIST])
         self.H_t[k], self.H_y[k], self.H_dy[k] = t, y, dy
         self.H_P[k], self.H_c[k] = self.P, self.contact
-        Pt, slt, dt, ft, Xt = self.work
+        Pt, slt, dt, ft, Xt, mt = self.work
         for i in range(self.n):
             if self.contact[i]:
                 self.H_d[k, i], self.H_f[k, i], self.H_X[k, i] = dt[i], ft[i], Xt[i]
@@ -243,5 +246,6 @@ def simulate(scene: Scene, ctl: Controls) -> Result:
     res = Result(run.H_t[:k].copy(), Y, run.H_dy[:k].copy(), run.H_d[:k].copy(), run.H_f[:k].copy(),
                  run.H_X[:k].copy(), run.H_P[:k].copy(), run.H_c[:k].copy(), STATUS[status], bottomed, cell,
                  run.mem.copy(), int(run.cnt[lk.K_STEPS]), int(run.cnt[lk.K_REJECTED]),
-                 int(run.cnt[lk.K_RHS]), wall, en, scene.gravity)
+                 int(run.cnt[lk.K_RHS]), int(run.cnt[lk.K_EVENTS]), int(run.cnt[lk.K_TRIALS]), wall, en,
+                 scene.gravity)
     return res

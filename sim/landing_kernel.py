@@ -3,8 +3,8 @@
 State y = (r, v terrain axes; q principal -> terrain; omega principal axes; W the work the legs took from
 the capsule). Dormand-Prince 5(4) with error control (or fixed steps) advances it. Discrete memory lives in
 arrays the caller owns and changes only when a step is accepted (`_commit`): cell maxima, footpad positions
-and slip state, contact flags. Touchdown and lift-off are located by bisection on the step size to
-`event_tol` seconds. When no leg touches an axisymmetric capsule a step is the closed-form
+and slip state, contact flags. Touchdown, lift-off and stick-to-slip are located by Illinois false position
+on the step size to `event_tol` seconds, every trial a real step. When no leg touches an axisymmetric capsule a step is the closed-form
 free flight (eq. 62-88) instead. The loop returns to the caller on a status: the end time, a full history
 buffer, or an outcome it detects (bottoming, tip angle, body contact, quiescence, the energy criterion).
 """
@@ -15,7 +15,7 @@ import numpy as np
 from numba import njit
 
 from . import crush_cell
-from .footpad_slip import footpad_force
+from .footpad_slip import FLOOR, footpad_force
 from .rigid_body import free_flight, quat_matrix, quat_rate
 from .stability import quiescence_momenta, quiescence_update, stable_by_energy, tipping_margins
 from .telescoping_leg import axial_set, free_footpad, leg_force
@@ -36,35 +36,43 @@ END, BUFFER, BOTTOMED, TIPPED, BODY, QUIET, FAILED, STABLE = 0, 2, 3, 4, 5, 6, 7
 C_TFINAL, C_RTOL, C_ATOL, C_FIXED, C_MAXSTEP, C_EVENTTOL, C_STOPBOTTOM, C_TIPCOS, C_CLEAR, C_FLIGHT, \
     C_QUIET_FRAC, C_TAUS, C_PERIOD, C_ENERGY_T = range(14)
 # Counters (int array).
-K_STEPS, K_REJECTED, K_RHS, K_HIST = range(4)
+K_STEPS, K_REJECTED, K_RHS, K_HIST, K_EVENTS, K_TRIALS = range(6)
 # Run scalars (float array): step size, quiescence clock, reference momentum, first bottoming (t, leg, cell).
 S_H, S_QUIET, S_MOMENTUM, S_BOT_T, S_BOT_LEG, S_BOT_CELL = range(6)
-EVENT_GTOL = 1e-13  # m: an event function this close to zero ends the search
 
+GTOL = 1e-12       # m: a contact event function this close above zero counts as there
 ARM = 1e-7          # m: a leg's next switch is armed once it is this far from its last one
 BAND = 1e-4         # m: an unarmed leg switches only this far past zero (grazing contact never chatters)
 
 
 @njit(cache=True)
-def _legs(geo, cells, mu, mem, contact, P, sliding, y, Pt, slt, dt, ft, Xt, R):
-    """Footpad, slip state and forces of every leg on the ground at state y; returns the cells' power."""
+def slip_events(mu):
+    """Whether stick-to-slip is located as an event: only when the force drops there (mu_S > mu_D)."""
+    return mu[0] > mu[1] * (1.0 + 1e-9)
+
+
+@njit(cache=True)
+def _legs(geo, cells, mu, mem, contact, P, sliding, y, Pt, slt, dt, ft, Xt, mt, R):
+    """Footpad, slip state, static margin and reach deficit (mt) and forces of every leg on the ground at
+    state y; returns the cells' power."""
     r, v, w = y[0:3], y[3:6], y[10:13]
+    hold = slip_events(mu)
     power = 0.0
     for i in range(len(contact)):
         if contact[i]:
-            sl, pw, _, _ = footpad_force(geo, cells, i, mem[i], P[i], sliding[i], mu[0], mu[1], r, R, v, w,
-                                         Pt[i], dt[i], ft[i], Xt[i])
+            sl, pw, _, _, mt[i, 0], mt[i, 1] = footpad_force(geo, cells, i, mem[i], P[i], sliding[i], hold, mu[0],
+                                                             mu[1], r, R, v, w, Pt[i], dt[i], ft[i], Xt[i])
             slt[i] = sl
             power += pw
     return power
 
 
 @njit(cache=True)
-def rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y, dy, Pt, slt, dt, ft, Xt):
+def rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y, dy, Pt, slt, dt, ft, Xt, mt):
     """dy/dt: eq. 3-5 in terrain axes, Euler's equations 6-8 in principal axes, quaternion rate, leg work."""
     q = y[6:10] / np.sqrt(y[6] ** 2 + y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
     R = quat_matrix(q)
-    power = _legs(geo, cells, mu, mem, contact, P, sliding, y, Pt, slt, dt, ft, Xt, R)
+    power = _legs(geo, cells, mu, mem, contact, P, sliding, y, Pt, slt, dt, ft, Xt, mt, R)
     F0 = F1 = F2 = M0 = M1 = M2 = 0.0
     for i in range(len(contact)):
         if contact[i]:
@@ -83,29 +91,36 @@ def rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y, dy,
 
 
 @njit(cache=True)
-def _events(cells, geo, mem, contact, tilt, armed, y, dt, g, raw):
-    """Per leg: free footpad height (in the air) or axial compression beyond the set (on the ground, from the
-    deflections dt already computed at y); an event is a crossing of zero from above. An unarmed leg's
-    threshold sits BAND past zero, so a footpad grazing the terrain stays put at zero force until it clearly
-    leaves instead of switching every step."""
+def _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y, dt, mt, g, raw):
+    """Event functions g (2n); an event is a crossing of zero from above. g[i]: leg i's free footpad height
+    (in the air) or axial compression beyond the set less the reach deficit (on the ground, from the leg
+    state dt, mt already computed at y); an unarmed leg's threshold sits BAND past zero, so a footpad grazing the terrain stays put at zero
+    force until it clearly leaves instead of switching every step. g[n + i]: a sticking footpad's static
+    margin mu_S FE3 - FE12 (N) when stick-to-slip is an event, else the constant 1."""
+    n = len(contact)
     R = quat_matrix(y[6:10] / np.sqrt(y[6] ** 2 + y[7] ** 2 + y[8] ** 2 + y[9] ** 2))
-    for i in range(len(contact)):
+    located = slip_events(mu)
+    for i in range(n):
         if contact[i]:
-            g[i] = dt[i, 0] - axial_set(cells, i, mem[i])
+            g[i] = dt[i, 0] - axial_set(cells, i, mem[i]) - mt[i, 1]
         else:
             g[i] = free_footpad(geo, cells, i, mem[i], tilt[i], y[0:3], R)[2]
         if not (raw or armed[i]):
             g[i] += BAND
+        g[n + i] = mt[i, 0] if located and contact[i] and not sliding[i] else 1.0
 
 
 @njit(cache=True)
-def _crossing(g_prev, g, n):
-    """The most negative event value among legs crossing zero from above, +inf if none."""
-    worst = np.inf
-    for i in range(n):
-        if g_prev[i] > 0.0 and g[i] <= 0.0 and g[i] < worst:
-            worst = g[i]
-    return worst
+def _first(g_prev, g, theta_max):
+    """Index of the event function crossing zero from above earliest (linear estimate, as a fraction of the
+    step, below theta_max), -1 if none."""
+    best, which = theta_max, -1
+    for k in range(len(g)):
+        if g_prev[k] > 0.0 and g[k] <= 0.0:
+            theta = g_prev[k] / (g_prev[k] - g[k])
+            if theta <= best:
+                best, which = theta, k
+    return which
 
 
 @njit(cache=True)
@@ -113,12 +128,12 @@ def _stage(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y, 
     """One Dormand-Prince step of size h from y with K[0] = f(y): y1, the error estimate, K[6] = f(y1); the
     work arrays are left holding the legs at y1 (the last stage is evaluated there). With `flight` (no leg
     on the ground, axisymmetric body) the step is the closed form of eq. 62-88, exact."""
-    Pt, slt, dt, ft, Xt = work
+    Pt, slt, dt, ft, Xt, mt = work
     if flight:
         r, v, q, w = free_flight(y[0:3], y[3:6], y[6:10], y[10:13], inertia, gravity, h)
         y1[0:3], y1[3:6], y1[6:10], y1[10:13], y1[13] = r, v, q, w, y[13]
         err[:] = 0.0
-        rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y1, K[6], Pt, slt, dt, ft, Xt)
+        rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y1, K[6], Pt, slt, dt, ft, Xt, mt)
         return
     yi = y1                                                     # stage state, overwritten below
     for s in range(1, 7):
@@ -127,7 +142,7 @@ def _stage(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y, 
             for j in range(s):
                 acc += h * A[s, j] * K[j, c]
             yi[c] = acc
-        rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, yi, K[s], Pt, slt, dt, ft, Xt)
+        rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, yi, K[s], Pt, slt, dt, ft, Xt, mt)
     for c in range(NY):
         acc, e = y[c], 0.0
         for j in range(7):
@@ -138,14 +153,15 @@ def _stage(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y, 
 
 @njit(cache=True)
 def _commit(geo, cells, mu, mem, contact, P, sliding, tilt, armed, y, energy, last, work, g):
-    """Accept state y: arm legs clear of their last switch, move footpads, add the step's work, update cell
-    memory. energy (n, C): each cell's work (exact for the rate-free force, trapezoidal for the damper).
-    last (n, 2C + 1): deflections, damper forces and a flag that they are set."""
-    Pt, slt, dt, ft, Xt = work
+    """Accept state y: arm legs clear of their last switch, move footpads, start slides where the static
+    margin is gone, add the step's work, update cell memory. energy (n, C): each cell's work (exact for the
+    rate-free force, trapezoidal for the damper). last (n, 2C + 1): deflections, damper forces and a flag
+    that they are set. Returns whether a slide started (the forces at y change)."""
+    Pt, slt, dt, ft, Xt, mt = work
     cd, cf, cn, ck, cc, cy = cells
-    _events(cells, geo, mem, contact, tilt, armed, y, dt, g, True)
-    R = quat_matrix(y[6:10])
+    _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y, dt, mt, g, True)
     C = mem.shape[1]
+    started = False
     for i in range(len(contact)):
         armed[i] = armed[i] or g[i] > ARM
         if not contact[i]:
@@ -153,6 +169,8 @@ def _commit(geo, cells, mu, mem, contact, P, sliding, tilt, armed, y, energy, la
         known = last[i, 2 * C] > 0.0
         P[i] = Pt[i]
         sliding[i] = slt[i]
+        if not sliding[i] and mt[i, 0] < 0.0:                     # eq. 33: a held footpad past mu_S slides
+            sliding[i], started = 1, True
         for j in range(1 + geo[5][i]):
             m = cn[i, j]
             d, f = cd[i, j, :m], cf[i, j, :m]
@@ -165,12 +183,13 @@ def _commit(geo, cells, mu, mem, contact, P, sliding, tilt, armed, y, energy, la
             mem[i, j, 0], mem[i, j, 1] = crush_cell.commit(d, f, cy[i, j], mem[i, j, 0], mem[i, j, 1], delta)
             last[i, j], last[i, C + j] = delta, damper
         last[i, 2 * C] = 1.0
+    return started
 
 
 @njit(cache=True)
 def switch(geo, cells, mem, contact, P, sliding, tilt, armed, y, which, last, work):
     """Touchdown (the footpad holds where it landed) or lift-off (the tilt is kept for recontact, eq. 13)."""
-    Pt, slt, dt, ft, Xt = work
+    Pt, slt, dt, ft, Xt, mt = work
     R = quat_matrix(y[6:10])
     armed[which] = 0
     C = mem.shape[1]
@@ -237,13 +256,15 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
     place. Returns (status, t)."""
     n, n_cell = mem.shape[0], mem.shape[1]
     K = np.zeros((7, NY))
-    y1, err, g_prev, g1 = np.empty(NY), np.empty(NY), np.empty(n), np.empty(n)
-    work = (np.zeros((n, 3)), np.zeros(n, np.int64), np.zeros((n, n_cell)), np.zeros((n, n_cell)), np.zeros((n, 3)))
-    Pt, slt, dt, ft, Xt = work
+    y1, err = np.empty(NY), np.empty(NY)
+    g_prev, g1, g_lo = np.empty(2 * n), np.empty(2 * n), np.empty(2 * n)
+    work = (np.zeros((n, 3)), np.zeros(n, np.int64), np.zeros((n, n_cell)), np.zeros((n, n_cell)), np.zeros((n, 3)),
+            np.zeros((n, 2)))
+    Pt, slt, dt, ft, Xt, mt = work
     args = (geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding)
-    rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y, K[0], Pt, slt, dt, ft, Xt)
+    rhs(*args, y, K[0], *work)
     cnt[K_RHS] += 1
-    _events(cells, geo, mem, contact, tilt, armed, y, dt, g_prev, False)
+    _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y, dt, mt, g_prev, False)
     fixed = ctl[C_FIXED] > 0.0
     h = ctl[C_FIXED] if fixed else run_state[S_H]
     t_final = ctl[C_TFINAL]
@@ -271,53 +292,65 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                 cnt[K_REJECTED] += 1
                 h *= max(0.2, 0.9 * e ** -0.2)
                 continue
-        _events(cells, geo, mem, contact, tilt, armed, y1, dt, g1, False)
+        _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y1, dt, mt, g1, False)
         h_acc = h
-        if _crossing(g_prev, g1, n) < np.inf:
-            # The earliest event: Illinois false position on the step size, each trial a real step.
-            lo, hi, f_lo, f_hi, side, mid = 0.0, h, np.inf, _crossing(g_prev, g1, n), 0, -1.0
-            for i in range(n):
-                if g_prev[i] > 0.0 and g1[i] <= 0.0:
-                    f_lo = min(f_lo, g_prev[i])
+        j = _first(g_prev, g1, np.inf)
+        forced = -1
+        if j >= 0:
+            # The earliest event: Illinois false position on the step size, each trial a real step; the
+            # function followed is the one crossing first in the current bracket. A function already within
+            # its tolerance of zero at the lower end switches there (a footpad slid to the edge of its reach
+            # sits at zero until it lifts off: no secant can place that crossing).
+            cnt[K_EVENTS] += 1
+            lo, hi, side, mid = 0.0, h, 0, -1.0
+            g_lo[:] = g_prev
+            f_lo, f_hi = g_prev[j], g1[j]
             while hi - lo > ctl[C_EVENTTOL]:
+                if lo > 0.0 and g_lo[j] <= (GTOL if j < n else FLOOR):
+                    forced = j
+                    break
                 mid = hi - f_hi * (hi - lo) / (f_hi - f_lo)
                 if not (lo < mid < hi):
                     mid = 0.5 * (lo + hi)
                 _stage(*args, y, mid, K, y1, err, work, flight)
                 cnt[K_RHS] += 6
-                _events(cells, geo, mem, contact, tilt, armed, y1, dt, g1, False)
-                f_mid = _crossing(g_prev, g1, n)
-                if f_mid < np.inf:
-                    hi, f_hi = mid, f_mid
+                cnt[K_TRIALS] += 1
+                _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y1, dt, mt, g1, False)
+                k = _first(g_prev, g1, np.inf)
+                if k >= 0:
+                    if k != j:
+                        j, f_lo, side = k, g_lo[k], 0
+                    hi, f_hi = mid, g1[j]
                     if side == -1:
                         f_lo *= 0.5
                     side = -1
-                    if f_mid > -EVENT_GTOL:
-                        break
+                    if -f_hi * (hi - lo) <= ctl[C_EVENTTOL] * (f_lo - f_hi):
+                        break                          # the secant puts the crossing within event_tol of hi
                 else:
-                    f_mid = np.inf
-                    for i in range(n):
-                        if g_prev[i] > 0.0:
-                            f_mid = min(f_mid, g1[i])
-                    lo, f_lo = mid, f_mid
+                    lo, f_lo = mid, g1[j]
+                    g_lo[:] = g1
                     if side == 1:
                         f_hi *= 0.5
                     side = 1
-            h_acc = hi
+            h_acc = hi if forced < 0 else lo
             if h_acc != mid:
                 _stage(*args, y, h_acc, K, y1, err, work, flight)
                 cnt[K_RHS] += 6
-                _events(cells, geo, mem, contact, tilt, armed, y1, dt, g1, False)
-        which = -1
-        best = np.inf
-        for i in range(n):
-            if g_prev[i] > 0.0 and g1[i] <= 0.0 and g1[i] < best:
-                best, which = g1[i], i
+                _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y1, dt, mt, g1, False)
         t += h_acc
         y[:] = y1
         y[6:10] /= np.sqrt(y[6] ** 2 + y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
         cnt[K_STEPS] += 1
-        _commit(geo, cells, mu, mem, contact, P, sliding, tilt, armed, y, energy, last, work, g1)
+        touch = 0
+        for i in range(n):                             # contact switches at this point (simultaneous ones too)
+            if (g_prev[i] > 0.0 and g1[i] <= 0.0) or i == forced:
+                touch += 1
+                g_lo[i] = 1.0
+            else:
+                g_lo[i] = 0.0
+        changed = _commit(geo, cells, mu, mem, contact, P, sliding, tilt, armed, y, energy, last, work, g1)
+        if forced >= n:
+            sliding[forced - n], changed = 1, True
         k = cnt[K_HIST]                                # record as committed (a switching leg: before it)
         H_t[k] = t
         H_y[k] = y
@@ -328,20 +361,22 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                 H_d[k, i], H_f[k, i], H_X[k, i] = np.nan, 0.0, 0.0
         H_P[k, :, :] = P
         H_c[k] = contact
-        if which < 0:
+        if touch == 0 and not changed:
             K[0] = K[6]                               # first same as last: memory updates keep the force
         else:
-            switch(geo, cells, mem, contact, P, sliding, tilt, armed, y, which, last, work)
-            rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y, K[0], Pt, slt, dt, ft, Xt)
+            for i in range(n):
+                if g_lo[i] > 0.0:
+                    switch(geo, cells, mem, contact, P, sliding, tilt, armed, y, i, last, work)
+            rhs(*args, y, K[0], *work)
             cnt[K_RHS] += 1
         H_dy[k] = K[0]
         cnt[K_HIST] = k + 1
-        _events(cells, geo, mem, contact, tilt, armed, y, dt, g_prev, False)
+        _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y, dt, mt, g_prev, False)
         if fixed:
             h = ctl[C_FIXED]
         elif flight:
             h = run_state[S_H]
-        elif which < 0:
+        elif j < 0:
             h = min(ctl[C_MAXSTEP], h * min(5.0, 0.9 * max(e, 1e-10) ** -0.2))
         if not flight:
             run_state[S_H] = h

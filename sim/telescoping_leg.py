@@ -158,19 +158,3 @@ def free_footpad(geo, cells, i, mem, tilt, r, R):
     leg had when it last left the ground."""
     return footpad_at(geo, i, geo[2][i] - axial_set(cells, i, mem), tilt[0], tilt[1], r, R)
 
-
-@njit(cache=True)
-def ground_point(geo, i, alpha, beta, r, R, out):
-    """Where the ray from leg i's attachment along (alpha, beta) meets the terrain z = 0; False if it
-    points away from the terrain."""
-    attach, to_body = geo[0], geo[1]
-    bz = r[2] + R[2, 0] * attach[i, 0] + R[2, 1] * attach[i, 1] + R[2, 2] * attach[i, 2]
-    u = leg_frame(alpha, beta)[0]
-    l0, l1, l2 = mv(to_body[i], u[0], u[1], u[2])
-    t0, t1, t2 = mv(R, l0, l1, l2)
-    if t2 >= -1e-12 or bz <= 0.0:
-        return False
-    s = -bz / t2
-    b0, b1, _ = mv(R, attach[i, 0], attach[i, 1], attach[i, 2])
-    out[0], out[1], out[2] = r[0] + b0 + s * t0, r[1] + b1 + s * t1, 0.0
-    return True

@@ -33,10 +33,14 @@ def test_slipping_footpads_sit_on_the_friction_cone():
     R = np.array([quat_matrix(q) for q in res.y[:, 6:10]])
     fe = np.einsum("nij,nlj->nli", R, res.leg_force)            # ground force on each leg, terrain axes
     on = res.contact > 0
-    ratio = np.hypot(fe[..., 0], fe[..., 1])[on] / np.maximum(fe[..., 2][on], 1e-9)
-    # eq. 33-34: in-plane / normal never exceeds mu_S = 1.5 (sticking) and the slide is solved to mu_D = 1.0;
-    # the bracketing solver closes |h| to 1e-12 of the forces, so 1e-9 is a safe margin.
-    assert np.max(ratio) <= 1.5 * (1 + 1e-9)
+    stays = np.zeros_like(on)
+    stays[:-1] = on[:-1] & on[1:]              # not a lift-off point (the leg leaves with its forces there)
+    fe12, fe3 = np.hypot(fe[..., 0], fe[..., 1])[stays], fe[..., 2][stays]
+    # eq. 33-34: in-plane force never exceeds mu_S = 1.5 times the normal force (sticking; the slide is solved
+    # to mu_D = 1.0). The bracketing solver closes the excess to 1e-12 of the forces (1e-9 relative is a safe
+    # margin); near a located lift-off the forces are within the event tolerance of zero, about
+    # k v event_tol = 1e6 N/m x 10 m/s x 1e-10 s = 1e-3 N, hence the absolute 1e-2 N.
+    assert np.all(fe12 <= 1.5 * fe3 * (1 + 1e-9) + 1e-2)
     moved = np.linalg.norm(np.diff(res.footpad, axis=0), axis=2)[on[1:] & on[:-1]]
     assert moved.max() > 1e-3                                     # the footpads did slide on the 20 deg slope
     assert res.energy["friction_J"] > 0                           # and friction took energy
