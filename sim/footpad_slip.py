@@ -33,6 +33,7 @@ from .vec3 import mv
 
 MAX_EXPAND = 200
 MAX_REFINE = 100
+MAX_DIP = 24         # golden-section steps: the dip is found to 1e-5 of the interval
 FLOOR = 1e-6        # N: in-plane force below this never starts a slide (round-off at zero load)
 
 
@@ -52,6 +53,30 @@ def _at(geo, cells, i, mem, mu, P0, d0, d1, s, r, R, v, w, P, defl, frc, X):
     if defl[0] < axial_set(cells, i, mem):
         return -1.0, 0.0, False
     return fe12 - mu * max(fe3, 0.0), fe12 + abs(fe3), True
+
+
+@njit(cache=True)
+def _dip(geo, cells, i, mem, mu, P0, d0, d1, a, b, r, R, v, w, P, defl, frc, X):
+    """Golden-section search for the lowest excess between a and b, stopping at the first point where it is
+    not positive; returns (s, excess)."""
+    k = 0.3819660112501051
+    c, d = a + k * (b - a), b - k * (b - a)
+    hc, _, okc = _at(geo, cells, i, mem, mu, P0, d0, d1, c, r, R, v, w, P, defl, frc, X)
+    hd, _, okd = _at(geo, cells, i, mem, mu, P0, d0, d1, d, r, R, v, w, P, defl, frc, X)
+    for _ in range(MAX_DIP):
+        if okc and hc <= 0.0:
+            return c, hc
+        if okd and hd <= 0.0:
+            return d, hd
+        if not okd or hc < hd:
+            b, d, hd, okd = d, c, hc, okc
+            c = a + k * (b - a)
+            hc, _, okc = _at(geo, cells, i, mem, mu, P0, d0, d1, c, r, R, v, w, P, defl, frc, X)
+        else:
+            a, c, hc, okc = c, d, hd, okd
+            d = b - k * (b - a)
+            hd, _, okd = _at(geo, cells, i, mem, mu, P0, d0, d1, d, r, R, v, w, P, defl, frc, X)
+    return c, hc if okc else 1.0
 
 
 @njit(cache=True)
@@ -81,12 +106,21 @@ def footpad_force(geo, cells, i, mem, P0, sliding, hold, mu_s, mu_d, r, R, v, w,
     s_hi, h_hi, ok_hi = 0.0, h0, True
     for _ in range(MAX_EXPAND):
         s_hi = s_lo + step
-        if h_lo < h_prev:
+        aimed = h_lo < h_prev
+        if aimed:
             root = s_lo + h_lo * (s_lo - s_prev) / (h_prev - h_lo)
+            aimed = root < s_hi
             s_hi = min(s_hi, s_lo + 1.2 * (root - s_lo))
         h_hi, _, ok_hi = _at(geo, cells, i, mem, mu_d, P0, d0, d1, s_hi, r, R, v, w, P, defl, frc, X)
         if h_hi <= 0.0:
             break
+        if aimed:
+            # The secant promised a crossing and h came back positive: a narrow dip (a pad unloading to zero
+            # turns h back up) may lie in between. Golden-section search for its bottom.
+            s_m, h_m = _dip(geo, cells, i, mem, mu_d, P0, d0, d1, s_lo, s_hi, r, R, v, w, P, defl, frc, X)
+            if h_m <= 0.0:
+                s_hi, h_hi, ok_hi = s_m, h_m, True
+                break
         s_prev, h_prev, s_lo, h_lo = s_lo, h_lo, s_hi, h_hi
         step = 4.0 * (s_lo - s_prev)
     # Refine: bisection while the far end is out of reach, then Illinois false position.

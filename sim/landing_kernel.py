@@ -3,8 +3,9 @@
 State y = (r, v terrain axes; q principal -> terrain; omega principal axes; W the work the legs took from
 the capsule). Dormand-Prince 5(4) with error control (or fixed steps) advances it. Discrete memory lives in
 arrays the caller owns and changes only when a step is accepted (`_commit`): cell maxima, footpad positions
-and slip state, contact flags. Touchdown, lift-off and stick-to-slip are located by Illinois false position
-on the step size to `event_tol` seconds, every trial a real step. When no leg touches an axisymmetric capsule a step is the closed-form
+and slip state, contact flags. Touchdown, lift-off and stick-to-slip are located to `event_tol` seconds:
+first on the step's Hermite interpolant (leg evaluations only), then by real trial steps aimed just short of
+the crossing, the step accepted before it. When no leg touches an axisymmetric capsule a step is the closed-form
 free flight (eq. 62-88) instead. The loop returns to the caller on a status: the end time, a full history
 buffer, or an outcome it detects (bottoming, tip angle, body contact, quiescence, the energy criterion).
 """
@@ -250,6 +251,68 @@ def _monitor(geo, mass, inertia, gravity, bottoming, up, body, order, mem, conta
 
 
 @njit(cache=True)
+def _hermite(y0, y1, f0, f1, h, theta, out):
+    """Cubic Hermite interpolant of a step at fraction theta (third order; the event search's guide)."""
+    for c in range(NY):
+        d = y1[c] - y0[c]
+        out[c] = y0[c] + theta * d + theta * (theta - 1.0) * ((1.0 - 2.0 * theta) * d + (theta - 1.0) * h * f0[c]
+                                                               + theta * h * f1[c])
+
+
+@njit(cache=True)
+def _guide(geo, cells, mu, mem, contact, P, sliding, tilt, armed, y, y1, f0, f1, h, j, g_prev, g1, tol, yt, ga, gb,
+           work):
+    """The earliest crossing on the step's Hermite interpolant, found by Illinois false position with one leg
+    evaluation per point (no integration): (time estimate, slope of the crossing function there, its index)."""
+    Pt, slt, dt, ft, Xt, mt = work
+    n2 = len(g_prev)
+    a, b, side = 0.0, h, 0
+    ga[:] = g_prev
+    gb[:] = g1
+    fa, fb = ga[j], gb[j]
+    for _ in range(60):
+        if b - a <= tol:
+            break
+        m = b - fb * (b - a) / (fb - fa)
+        if not (a < m < b):
+            m = 0.5 * (a + b)
+        _hermite(y, y1, f0, f1, h, m / h, yt)
+        q = yt[6:10] / np.sqrt(yt[6] ** 2 + yt[7] ** 2 + yt[8] ** 2 + yt[9] ** 2)
+        _legs(geo, cells, mu, mem, contact, P, sliding, yt, Pt, slt, dt, ft, Xt, mt, quat_matrix(q))
+        _events(cells, geo, mu, mem, contact, sliding, tilt, armed, yt, dt, mt, yt[NY:NY + n2], False)
+        k = _first(g_prev, yt[NY:NY + n2], np.inf)
+        if k >= 0:
+            if k != j:
+                j, fa, side = k, ga[k], 0
+            b = m
+            gb[:] = yt[NY:NY + n2]
+            fb = gb[j]
+            if side == -1:
+                fa *= 0.5
+            side = -1
+        else:
+            a = m
+            ga[:] = yt[NY:NY + n2]
+            fa = ga[j]
+            if side == 1:
+                fb *= 0.5
+            side = 1
+    slope = (gb[j] - ga[j]) / (b - a) if b > a else -1.0
+    return a + ga[j] / max(-slope, 1e-300) if ga[j] > 0.0 else a, min(slope, -1e-300), j
+
+
+@njit(cache=True)
+def _copy_work(src, dst):
+    """Copy the leg state arrays of one evaluation (footpads, slip, deflections, forces, margins)."""
+    dst[0][:] = src[0]
+    dst[1][:] = src[1]
+    dst[2][:] = src[2]
+    dst[3][:] = src[3]
+    dst[4][:] = src[4]
+    dst[5][:] = src[5]
+
+
+@njit(cache=True)
 def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem, contact, P, sliding, tilt, armed,
         energy, last, y, t, ctl, cnt, run_state, H_t, H_y, H_dy, H_d, H_f, H_X, H_P, H_c):
     """Advance the landing from (t, y) until t_final or a status; y, t and every memory array are updated in
@@ -261,6 +324,8 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
     work = (np.zeros((n, 3)), np.zeros(n, np.int64), np.zeros((n, n_cell)), np.zeros((n, n_cell)), np.zeros((n, 3)),
             np.zeros((n, 2)))
     Pt, slt, dt, ft, Xt, mt = work
+    y_lo, yt, ga, gb = np.empty(NY), np.empty(NY + 2 * n), np.empty(2 * n), np.empty(2 * n)
+    work_lo = (Pt.copy(), slt.copy(), dt.copy(), ft.copy(), Xt.copy(), mt.copy())
     args = (geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding)
     rhs(*args, y, K[0], *work)
     cnt[K_RHS] += 1
@@ -293,23 +358,31 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                 h *= max(0.2, 0.9 * e ** -0.2)
                 continue
         _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y1, dt, mt, g1, False)
-        h_acc = h
         j = _first(g_prev, g1, np.inf)
-        forced = -1
         if j >= 0:
             # The earliest event: Illinois false position on the step size, each trial a real step; the
-            # function followed is the one crossing first in the current bracket. A function already within
-            # its tolerance of zero at the lower end switches there (a footpad slid to the edge of its reach
-            # sits at zero until it lifts off: no secant can place that crossing).
+            # function followed is the one crossing first in the current bracket. The step is accepted at the
+            # lower end, before the crossing, and the switch made there: every stage of the accepted step then
+            # saw the forces before it, also where the crossing is a jump (a slide leaving its reach). The
+            # search ends when the bracket or the secant's distance from its lower end is within event_tol,
+            # or when the function there is within its tolerance of zero (a footpad slid to the edge of its
+            # reach sits at zero until it lifts off: no secant can place that crossing).
             cnt[K_EVENTS] += 1
-            lo, hi, side, mid = 0.0, h, 0, -1.0
+            tol = ctl[C_EVENTTOL]
+            est, slope, j = _guide(geo, cells, mu, mem, contact, P, sliding, tilt, armed, y, y1, K[0], K[6], h, j,
+                                   g_prev, g1, 0.1 * tol, yt, ga, gb, work)
+            lo, hi, side, mid, a_hi, newton = 0.0, h, 0, -1.0, g1[j], 0
             g_lo[:] = g_prev
             f_lo, f_hi = g_prev[j], g1[j]
-            while hi - lo > ctl[C_EVENTTOL]:
-                if lo > 0.0 and g_lo[j] <= (GTOL if j < n else FLOOR):
-                    forced = j
+            while hi - lo > tol:
+                if lo > 0.0 and (g_lo[j] <= (GTOL if j < n else FLOOR) or g_lo[j] <= -slope * tol
+                                 or g_lo[j] * (hi - lo) <= tol * (g_lo[j] - a_hi)):
                     break
-                mid = hi - f_hi * (hi - lo) / (f_hi - f_lo)
+                # Aim just short of the crossing: first from the interpolant, then Newton from the nearer
+                # real end with the interpolant's slope; Illinois on the real bracket if that stalls.
+                mid = est - 0.5 * tol
+                if newton >= 4 or not (lo < mid < hi):
+                    mid = hi - f_hi * (hi - lo) / (f_hi - f_lo)
                 if not (lo < mid < hi):
                     mid = 0.5 * (lo + hi)
                 _stage(*args, y, mid, K, y1, err, work, flight)
@@ -317,26 +390,34 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                 cnt[K_TRIALS] += 1
                 _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y1, dt, mt, g1, False)
                 k = _first(g_prev, g1, np.inf)
+                newton += 1
                 if k >= 0:
                     if k != j:
-                        j, f_lo, side = k, g_lo[k], 0
-                    hi, f_hi = mid, g1[j]
+                        j, f_lo, side, newton = k, g_lo[k], 0, 4
+                    hi, f_hi, a_hi = mid, g1[j], g1[j]
+                    est = hi + g1[j] / -slope
                     if side == -1:
                         f_lo *= 0.5
                     side = -1
-                    if -f_hi * (hi - lo) <= ctl[C_EVENTTOL] * (f_lo - f_hi):
-                        break                          # the secant puts the crossing within event_tol of hi
                 else:
                     lo, f_lo = mid, g1[j]
                     g_lo[:] = g1
+                    y_lo[:] = y1
+                    _copy_work(work, work_lo)
+                    est = lo + g1[j] / -slope
                     if side == 1:
                         f_hi *= 0.5
                     side = 1
-            h_acc = hi if forced < 0 else lo
-            if h_acc != mid:
-                _stage(*args, y, h_acc, K, y1, err, work, flight)
+            forced, h_acc = j, lo
+            if lo == 0.0:                              # the crossing is within event_tol of the start
+                _stage(*args, y, 0.0, K, y1, err, work, flight)
                 cnt[K_RHS] += 6
-                _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y1, dt, mt, g1, False)
+            else:
+                y1[:] = y_lo
+                _copy_work(work_lo, work)
+            g1[:] = g_lo
+        else:
+            forced, h_acc = -1, h
         t += h_acc
         y[:] = y1
         y[6:10] /= np.sqrt(y[6] ** 2 + y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
@@ -352,6 +433,8 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
         if forced >= n:
             sliding[forced - n], changed = 1, True
         k = cnt[K_HIST]                                # record as committed (a switching leg: before it)
+        if h_acc == 0.0 and k > 0:
+            k -= 1                                     # a switch at the start of a step replaces its record
         H_t[k] = t
         H_y[k] = y
         for i in range(n):

@@ -9,7 +9,7 @@ the pads' generalized forces over the lever al, so that X . dd equals the cells'
 closes). Cell rates come from the kinematics, not finite differences.
 
 `TelescopingLeg` describes a leg; `pack` turns a set of legs into the arrays the compiled functions take:
-geo = (attach (n,3), to_body (n,3,3), rho, pad_lever, pad_angles (n,P), n_pads, small_angle) and
+geo = (attach (n,3), to_body (n,3,3), rho, pad_lever, pad angle cosines and sines (n,P,2), n_pads, small_angle) and
 cells = (deflections (n,C,K), forces (n,C,K), n_points (n,C), k, c, yield force or -1 (n,C)).
 """
 
@@ -56,12 +56,13 @@ def pack(legs: tuple[TelescopingLeg, ...]):
     n_pad = max(len(leg.pads) for leg in legs)
     n_cell = 1 + n_pad
     n_pt = max(len(c.curve.deflection) for leg in legs for c in leg.cells)
-    angles = np.zeros((n, max(n_pad, 1)))
+    angles = np.zeros((n, max(n_pad, 1), 2))
     cd, cf = np.zeros((n, n_cell, n_pt)), np.zeros((n, n_cell, n_pt))
     cn = np.zeros((n, n_cell), np.int64)
     ck, cc, cy = np.ones((n, n_cell)), np.zeros((n, n_cell)), -np.ones((n, n_cell))
     for i, leg in enumerate(legs):
-        angles[i, :len(leg.pads)] = leg.pad_angles
+        angles[i, :len(leg.pads), 0] = np.cos(leg.pad_angles)
+        angles[i, :len(leg.pads), 1] = np.sin(leg.pad_angles)
         for j, cell in enumerate(leg.cells):
             d, f, k, c, y = cell.arrays
             cd[i, j, :len(d)], cf[i, j, :len(d)], cn[i, j] = d, f, len(d)
@@ -105,7 +106,9 @@ def leg_force(geo, cells, i, mem, P, r, R, v, w, defl, frc, X):
     horiz = np.sqrt(d0 * d0 + d1 * d1)
     alpha = np.arctan2(horiz, -d2)                                  # eq. 17-19
     beta = np.arctan2(d1, d0) if horiz > 0.0 else 0.0
-    u, ea, eb = leg_frame(alpha, beta)
+    sa, ca = horiz / al, -d2 / al                                   # leg_frame(alpha, beta) without the trig
+    cb, sb = (d0 / horiz, d1 / horiz) if horiz > 0.0 else (1.0, 0.0)
+    u, ea, eb = (sa * cb, sa * sb, -ca), (ca * cb, ca * sb, sa), (-sb, cb, 0.0)
     delta = rho[i] - al                                             # eq. 20
     rate = -(u[0] * e0 + u[1] * e1 + u[2] * e2)
     defl[0] = delta
@@ -115,13 +118,12 @@ def leg_force(geo, cells, i, mem, P, r, R, v, w, defl, frc, X):
     beta_dot = (eb[0] * e0 + eb[1] * e1) / horiz if horiz > 0.0 else 0.0   # al sin(alpha) = horiz
     if small[i]:
         tilt, tilt_rate = alpha, 1.0
-        ratio = alpha / np.sin(alpha) if alpha > 0.0 else 1.0      # T(alpha) / sin(alpha)
+        ratio = alpha / sa if alpha > 0.0 else 1.0      # T(alpha) / sin(alpha)
     else:
-        tilt, tilt_rate, ratio = np.sin(alpha), np.cos(alpha), 1.0
+        tilt, tilt_rate, ratio = sa, ca, 1.0
     q_alpha, q_beta = 0.0, 0.0
-    cb, sb = eb[1], -eb[0]                                          # cos(beta), sin(beta)
     for j in range(n_pads[i]):
-        cj, sj = np.cos(angles[i, j]), np.sin(angles[i, j])
+        cj, sj = angles[i, j, 0], angles[i, j, 1]
         cg, sg = cj * cb + sj * sb, sj * cb - cj * sb               # cos, sin of (gamma_j - beta)
         dj = pad_lever[i] * tilt * cg                               # eq. 21
         rj = pad_lever[i] * (tilt_rate * cg * alpha_dot + tilt * sg * beta_dot)

@@ -10,9 +10,10 @@ import pytest
 
 from alightsize.cli import main
 from alightsize.landing_output import history_frame
+from alightsize.random_landings import random_landing
 from alightsize.scene_config import read_scene
 from sim.landing import simulate
-from sim.rigid_body import axis_rotation, matrix_quat, quat_matrix
+from sim.rigid_body import quat_matrix
 
 SCENES = "examples/affdl-tr-66-33/scenes"
 N_RANDOM = int(os.environ.get("ALIGHTSIZE_RANDOM_SCENES", "3"))   # issue 4 asks 1,000: see docs/simulator.md
@@ -47,27 +48,15 @@ def test_slipping_footpads_sit_on_the_friction_cone():
 
 
 def test_randomized_scenes_never_fail():
-    """Seeded random landings (N_RANDOM; issue 4 asks 1,000) over slope, velocities, inclination, roll rate and
-    friction: no numerical failure, a finite energy audit (the slip solver converges on every scene)."""
+    """Seeded random landings (N_RANDOM here; benchmarks/random_scenes.py runs the 1,000 issue 4 asks) over
+    slope, velocities, inclination, roll rate and friction: no numerical failure, energy closes."""
     base = read_scene(f"{SCENES}/telescoping_config1.toml")
-    rng = np.random.default_rng(20261121)
     for k in range(N_RANDOM):
-        slope = np.radians(rng.uniform(-35, 35))
-        c, s = np.cos(slope), np.sin(slope)
-        lepk = np.array([[1, 0, 0], [0, c, s], [0, -s, c]])
-        v = np.array([rng.uniform(-2, 2), rng.uniform(0, 15), -rng.uniform(5, 35)]) * 0.3048
-        tilt = np.radians(rng.uniform(0, 12))
-        az = rng.uniform(0, 2 * np.pi)
-        axis = np.array([np.cos(az), np.sin(az), 0.0])
-        q0 = matrix_quat(lepk @ axis_rotation(axis, tilt) @ quat_matrix(base.scene.q0))
-        mu_d = rng.uniform(0.3, 1.2)
-        scene = dataclasses.replace(base.scene, gravity=lepk @ np.array([0, 0, -9.80665]), v0=lepk @ v, q0=q0,
-                                    omega0=np.array([0, 0, rng.choice([0.0, 3.0])]), mu_dynamic=mu_d,
-                                    mu_static=1.5 * mu_d)
-        res = simulate(scene, dataclasses.replace(base.controls, t_final=0.25))
+        res = simulate(random_landing(base.scene, 20261121, k), dataclasses.replace(base.controls, t_final=0.25))
         assert res.status != "failed", k
         assert np.isfinite(res.y).all() and np.isfinite(res.energy["closure_rel"]), k
-        assert res.energy["closure_rel"] < 1e-3, (k, res.energy)
+        # Issue 4 asks 1e-4 of the impact energy at default settings; these scenes hold it too.
+        assert res.energy["closure_rel"] < 1e-4, (k, res.energy)
 
 
 def test_simulate_cli_writes_the_contract_outputs(tmp_path):
