@@ -9,6 +9,8 @@ import dataclasses
 import json
 import os
 import platform
+import subprocess
+import sys
 import time
 from pathlib import Path
 
@@ -130,8 +132,51 @@ def scipy_landing(cfg: SceneConfig, ctl: Controls, method: str) -> tuple[dict, i
     return {"peak": peak, "stroke": float(np.max(run.mem[:, :, 0])), "final": y[:13].copy(), "t_end": t}, nfev, steps
 
 
+def python_baseline(scene_path: str, t_sim: float, method: str, rtol: float) -> dict:
+    """scipy_landing timed in this process; run under NUMBA_DISABLE_JIT=1 it is the plain-numpy baseline (the
+    equations as interpreted Python/numpy, no compilation)."""
+    cfg = read_scene(scene_path)
+    ctl = _controls(cfg, t_sim, rtol=rtol, atol=rtol * 1e-3)
+    t0 = time.perf_counter()
+    m, nfev, steps = scipy_landing(cfg, ctl, method)
+    return {"wall_s": time.perf_counter() - t0, "nfev": nfev, "steps": steps, "peak": m["peak"], "stroke": m["stroke"],
+            "final": m["final"].tolist(), "t_end": m["t_end"]}
+
+
+def _uncompiled(cfg: SceneConfig, t_sim: float, method: str, rtol: float) -> dict:
+    """python_baseline in a subprocess with numba's JIT disabled."""
+    code = ("import json, sys; from alightsize.bench import python_baseline; "
+            f"print(json.dumps(python_baseline({str(cfg.path)!r}, {t_sim!r}, {method!r}, {rtol!r})))")
+    out = subprocess.run([sys.executable, "-c", code], env={**os.environ, "NUMBA_DISABLE_JIT": "1"},
+                         capture_output=True, text=True, check=True)
+    r = json.loads(out.stdout.strip().splitlines()[-1])
+    r["final"] = np.array(r["final"])
+    return r
+
+
+def _targets(cases: list[dict]) -> list[dict]:
+    """Per scene: the fastest case of each kind at or below 0.1 % peak-XDD(3) error (issue 4's criterion), in
+    ms per simulated second, and the speed-ups of the compiled simulator over the baselines."""
+    out = []
+    for scene in sorted({c["scene"] for c in cases}):
+        best = {}
+        for c in cases:
+            if c["scene"] == scene and c["err_peak_xdd3_rel"] <= 1e-3:
+                kind = "ours" if c["compiled"] else c["method"]
+                ms = 1e3 * c["wall_s"] / c["t_sim_s"]
+                if kind not in best or ms < best[kind]["ms_per_simulated_s"]:
+                    best[kind] = {"method": c["method"], "setting": c["setting"], "ms_per_simulated_s": ms,
+                                  "err_peak_xdd3_rel": c["err_peak_xdd3_rel"]}
+        row = {"scene": scene, "best": best}
+        if "ours" in best:
+            row["speedup"] = {k: v["ms_per_simulated_s"] / best["ours"]["ms_per_simulated_s"]
+                              for k, v in best.items() if k != "ours"}
+        out.append(row)
+    return out
+
+
 def run_bench(quick: bool = False, progress=print) -> dict:
-    ladder = [1e-3, 1e-4, 1e-5, 1e-6, 1e-7] if not quick else [1e-3, 1e-5, 1e-7]
+    ladder = [1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7] if not quick else [1e-3, 1e-5, 1e-7]
     fixed = [2e-4, 1e-4, 5e-5] if not quick else [1e-4]
     scipy_ladder = [1e-3, 1e-5, 1e-7] if not quick else [1e-4]
     repeats = 3 if not quick else 1
@@ -159,11 +204,18 @@ def run_bench(quick: bool = False, progress=print) -> dict:
                               "wall_s": wall, "rhs_evals": nfev, "steps": steps, **_errors(m, ref), "compiled": False})
                 progress(f"  scipy-{method} rtol={r:g}: {wall * 1e3:.1f} ms, peak XDD(3) error "
                          f"{cases[-1]['err_peak_xdd3_rel']:.1e}")
+        for r in ([1e-3, 1e-5] if not quick else []):
+            b = _uncompiled(cfg, t_sim, "RK45", r)
+            cases.append({"scene": cfg.name, "method": "scipy-RK45-uncompiled", "setting": f"rtol={r:g}",
+                          "t_sim_s": t_sim, "wall_s": b["wall_s"], "rhs_evals": b["nfev"], "steps": b["steps"],
+                          **_errors(b, ref), "compiled": False})
+            progress(f"  scipy-RK45 plain numpy rtol={r:g}: {b['wall_s'] * 1e3:.0f} ms, peak XDD(3) error "
+                     f"{cases[-1]['err_peak_xdd3_rel']:.1e}")
     import numba
     return {"schema": "alightsize.bench/1",
             "machine": {"cores": os.cpu_count(), "python": platform.python_version(), "numpy": np.__version__,
                         "numba": numba.__version__, "processor": platform.processor() or platform.machine()},
-            "compile_or_cache_load_s": compile_s, "cases": cases}
+            "compile_or_cache_load_s": compile_s, "cases": cases, "targets": _targets(cases)}
 
 
 def _html(data: dict) -> str:
@@ -173,7 +225,13 @@ def _html(data: dict) -> str:
 <h1>Landing simulator: speed against error</h1>
 <p>{{ m.cores }} cores, Python {{ m.python }}, numpy {{ m.numpy }}, numba {{ m.numba }}. Compiled code loaded in
 {{ '%.2f' % d.compile_or_cache_load_s }} s (excluded below). Wall: median of repeated runs; errors against an rtol 1e-11
-reference of the same scene.</p><img src="work_precision.png">
+reference of the same scene.</p>
+<h2>At or below 0.1 % peak-XDD(3) error (issue 4's criterion)</h2>
+<table border=1 cellspacing=0 cellpadding=3><tr><th>scene<th>fastest<th>setting<th>ms per simulated s<th>error<th>speed-up over it</tr>
+{% for t in d.targets %}{% for kind, b in t.best.items() %}<tr><td>{{ t.scene }}<td>{{ b.method }}<td>{{ b.setting }}
+<td>{{ '%.1f' % b.ms_per_simulated_s }}<td>{{ '%.1e' % b.err_peak_xdd3_rel }}
+<td>{{ '%.1fx' % t.speedup[kind] if t.speedup and kind in t.speedup else '' }}</tr>{% endfor %}{% endfor %}</table>
+<img src="work_precision.png">
 <table border=1 cellspacing=0 cellpadding=3><tr><th>scene<th>method<th>setting<th>t_sim (s)<th>wall (ms)
 <th>ms per simulated s<th>rhs evals<th>steps<th>peak XDD(3) err<th>max stroke err<th>final state err</tr>
 {% for c in d.cases %}<tr><td>{{ c.scene }}<td>{{ c.method }}<td>{{ c.setting }}<td>{{ c.t_sim_s }}

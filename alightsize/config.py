@@ -32,6 +32,16 @@ class Node:
     def key(self, name: str) -> str:
         return f"{self.path}.{name}" if self.path else name
 
+    def set_path(self, dotted: str, value: Any) -> None:
+        """Set the value at a dotted key path below this table (creating tables on the way)."""
+        *tables, last = dotted.split(".")
+        data = self.data
+        for k, name in enumerate(tables):
+            data = data.setdefault(name, {})
+            if not isinstance(data, dict):
+                raise self.error(".".join(tables[:k + 1]), "a table to set " + dotted + " in", _describe(data))
+        data[last] = value
+
     def error(self, name: str, expected: str, found: str) -> InputError:
         return InputError(self.file, self.key(name), expected, found)
 

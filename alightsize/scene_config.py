@@ -136,10 +136,13 @@ def _inclination_attitude(roll: float, theta: float, azimuth: float) -> tuple[fl
     return float(yaw), float(pitch)
 
 
-def read_scene(path: str | Path) -> SceneConfig:
-    """Read and validate a scene config; problems are InputErrors naming file and key path."""
+def read_scene(path: str | Path, overrides: dict[str, object] | None = None) -> SceneConfig:
+    """Read and validate a scene config, with `overrides` (dotted key path -> TOML value, e.g.
+    {"terrain.slope": "-20 deg"}) applied first; problems are InputErrors naming file and key path."""
     path = Path(path)
     root = load_toml(path)
+    for key, value in (overrides or {}).items():
+        root.set_path(key, value)
     root.allow(("scene", "capsule", "cells", "legs", "terrain", "initial", "controls", "output"))
     head = root.table("scene", optional=True)
     name = head.string("name", path.stem) if head else path.stem
