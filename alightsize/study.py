@@ -118,7 +118,11 @@ def run_study(study: Study, progress=None) -> list[dict]:
     rows = []
     t0 = time.perf_counter()
     for k, run in enumerate(study.runs):
-        cfg = read_scene(run.scene, run.overrides)
+        try:
+            cfg = read_scene(run.scene, run.overrides)
+        except InputError as exc:                      # a value the run table put into the scene
+            raise InputError(exc.file, f"{exc.key} (run {run.run_id} of {study.path.name})", exc.expected,
+                             exc.found) from None
         res = simulate(cfg.scene, cfg.controls)
         s = summary(cfg, res)
         cls = outcome_class(cfg, res)
@@ -129,8 +133,9 @@ def run_study(study: Study, progress=None) -> list[dict]:
                      "closure_rel": s["energy"]["closure_rel"], "wall_s": res.wall_s})
         if progress:
             el = time.perf_counter() - t0
+            eta = el / (k + 1) * (len(study.runs) - k - 1)
             progress(f"[{k + 1}/{len(study.runs)}] {run.run_id}: {cls} (report: {run.reference}) "
-                     f"{res.wall_s * 1e3:.0f} ms; elapsed {el:.1f} s, eta {el / (k + 1) * (len(study.runs) - k - 1):.0f} s")
+                     f"{res.wall_s * 1e3:.0f} ms; elapsed {el:.1f} s, eta {eta:.0f} s")
     return rows
 
 

@@ -5,8 +5,8 @@ the capsule). Dormand-Prince 5(4) with error control (or fixed steps) advances i
 arrays the caller owns and changes only when a step is accepted (`_commit`): cell maxima, footpad positions
 and slip state, contact flags. Touchdown, lift-off and stick-to-slip are located to `event_tol` seconds:
 first on the step's Hermite interpolant (leg evaluations only), then by real trial steps aimed just short of
-the crossing, the step accepted before it. When no leg touches an axisymmetric capsule a step is the closed-form
-free flight (eq. 62-88) instead. The loop returns to the caller on a status: the end time, a full history
+the crossing, the step accepted before it. When no leg touches an axisymmetric capsule a step is the
+closed-form free flight (eq. 62-88) instead. The loop returns to the caller on a status: the end time, a full history
 buffer, or an outcome it detects (bottoming, tip angle, body contact, quiescence, the energy criterion).
 """
 
@@ -95,9 +95,10 @@ def rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y, dy,
 def _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y, dt, mt, g, raw):
     """Event functions g (2n); an event is a crossing of zero from above. g[i]: leg i's free footpad height
     (in the air) or axial compression beyond the set less the reach deficit (on the ground, from the leg
-    state dt, mt already computed at y); an unarmed leg's threshold sits BAND past zero, so a footpad grazing the terrain stays put at zero
-    force until it clearly leaves instead of switching every step. g[n + i]: a sticking footpad's static
-    margin mu_S FE3 - FE12 (N) when stick-to-slip is an event, else the constant 1."""
+    state dt, mt already computed at y); an unarmed leg's threshold sits BAND past zero, so a footpad
+    grazing the terrain stays put at zero force until it clearly leaves instead of switching every step.
+    g[n + i]: a sticking footpad's static margin mu_S FE3 - FE12 (N) when stick-to-slip is an event, else the
+    constant 1."""
     n = len(contact)
     R = quat_matrix(y[6:10] / np.sqrt(y[6] ** 2 + y[7] ** 2 + y[8] ** 2 + y[9] ** 2))
     located = slip_events(mu)
@@ -112,10 +113,9 @@ def _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y, dt, mt, g, ra
 
 
 @njit(cache=True)
-def _first(g_prev, g, theta_max):
-    """Index of the event function crossing zero from above earliest (linear estimate, as a fraction of the
-    step, below theta_max), -1 if none."""
-    best, which = theta_max, -1
+def _first(g_prev, g):
+    """Index of the event function crossing zero from above earliest (linear estimate), -1 if none."""
+    best, which = np.inf, -1
     for k in range(len(g)):
         if g_prev[k] > 0.0 and g[k] <= 0.0:
             theta = g_prev[k] / (g_prev[k] - g[k])
@@ -260,12 +260,11 @@ def _hermite(y0, y1, f0, f1, h, theta, out):
 
 
 @njit(cache=True)
-def _guide(geo, cells, mu, mem, contact, P, sliding, tilt, armed, y, y1, f0, f1, h, j, g_prev, g1, tol, yt, ga, gb,
-           work):
+def _guide(geo, cells, mu, mem, contact, P, sliding, tilt, armed, y, y1, f0, f1, h, j, g_prev, g1, tol, yt, gm, ga,
+           gb, work):
     """The earliest crossing on the step's Hermite interpolant, found by Illinois false position with one leg
     evaluation per point (no integration): (time estimate, slope of the crossing function there, its index)."""
     Pt, slt, dt, ft, Xt, mt = work
-    n2 = len(g_prev)
     a, b, side = 0.0, h, 0
     ga[:] = g_prev
     gb[:] = g1
@@ -279,20 +278,20 @@ def _guide(geo, cells, mu, mem, contact, P, sliding, tilt, armed, y, y1, f0, f1,
         _hermite(y, y1, f0, f1, h, m / h, yt)
         q = yt[6:10] / np.sqrt(yt[6] ** 2 + yt[7] ** 2 + yt[8] ** 2 + yt[9] ** 2)
         _legs(geo, cells, mu, mem, contact, P, sliding, yt, Pt, slt, dt, ft, Xt, mt, quat_matrix(q))
-        _events(cells, geo, mu, mem, contact, sliding, tilt, armed, yt, dt, mt, yt[NY:NY + n2], False)
-        k = _first(g_prev, yt[NY:NY + n2], np.inf)
+        _events(cells, geo, mu, mem, contact, sliding, tilt, armed, yt, dt, mt, gm, False)
+        k = _first(g_prev, gm)
         if k >= 0:
             if k != j:
                 j, fa, side = k, ga[k], 0
             b = m
-            gb[:] = yt[NY:NY + n2]
+            gb[:] = gm
             fb = gb[j]
             if side == -1:
                 fa *= 0.5
             side = -1
         else:
             a = m
-            ga[:] = yt[NY:NY + n2]
+            ga[:] = gm
             fa = ga[j]
             if side == 1:
                 fb *= 0.5
@@ -324,7 +323,8 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
     work = (np.zeros((n, 3)), np.zeros(n, np.int64), np.zeros((n, n_cell)), np.zeros((n, n_cell)), np.zeros((n, 3)),
             np.zeros((n, 2)))
     Pt, slt, dt, ft, Xt, mt = work
-    y_lo, yt, ga, gb = np.empty(NY), np.empty(NY + 2 * n), np.empty(2 * n), np.empty(2 * n)
+    y_lo, yt = np.empty(NY), np.empty(NY)
+    gm, ga, gb = np.empty(2 * n), np.empty(2 * n), np.empty(2 * n)
     work_lo = (Pt.copy(), slt.copy(), dt.copy(), ft.copy(), Xt.copy(), mt.copy())
     args = (geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding)
     rhs(*args, y, K[0], *work)
@@ -358,19 +358,21 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                 h *= max(0.2, 0.9 * e ** -0.2)
                 continue
         _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y1, dt, mt, g1, False)
-        j = _first(g_prev, g1, np.inf)
+        j = _first(g_prev, g1)
         if j >= 0:
-            # The earliest event: Illinois false position on the step size, each trial a real step; the
-            # function followed is the one crossing first in the current bracket. The step is accepted at the
-            # lower end, before the crossing, and the switch made there: every stage of the accepted step then
-            # saw the forces before it, also where the crossing is a jump (a slide leaving its reach). The
+            # The earliest event: located first on the step's Hermite interpolant (_guide), then by real trial
+            # steps aimed just short of it (Newton with the interpolant's slope, Illinois on the real bracket
+            # if that stalls); the function followed is the one crossing first in the current bracket. The
+            # step is accepted at the lower end, before the crossing, and that one function switched there
+            # (a leg touching at the same instant follows in the next step): every stage of the accepted step
+            # then saw the forces before it, also where the crossing is a jump (a slide leaving its reach). The
             # search ends when the bracket or the secant's distance from its lower end is within event_tol,
             # or when the function there is within its tolerance of zero (a footpad slid to the edge of its
             # reach sits at zero until it lifts off: no secant can place that crossing).
             cnt[K_EVENTS] += 1
             tol = ctl[C_EVENTTOL]
             est, slope, j = _guide(geo, cells, mu, mem, contact, P, sliding, tilt, armed, y, y1, K[0], K[6], h, j,
-                                   g_prev, g1, 0.1 * tol, yt, ga, gb, work)
+                                   g_prev, g1, 0.1 * tol, yt, gm, ga, gb, work)
             lo, hi, side, mid, a_hi, newton = 0.0, h, 0, -1.0, g1[j], 0
             g_lo[:] = g_prev
             f_lo, f_hi = g_prev[j], g1[j]
@@ -389,7 +391,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                 cnt[K_RHS] += 6
                 cnt[K_TRIALS] += 1
                 _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y1, dt, mt, g1, False)
-                k = _first(g_prev, g1, np.inf)
+                k = _first(g_prev, g1)
                 newton += 1
                 if k >= 0:
                     if k != j:
@@ -410,25 +412,18 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                     side = 1
             forced, h_acc = j, lo
             if lo == 0.0:                              # the crossing is within event_tol of the start
-                _stage(*args, y, 0.0, K, y1, err, work, flight)
-                cnt[K_RHS] += 6
+                y1[:] = y
+                rhs(*args, y1, K[6], *work)
+                cnt[K_RHS] += 1
             else:
                 y1[:] = y_lo
                 _copy_work(work_lo, work)
-            g1[:] = g_lo
         else:
             forced, h_acc = -1, h
         t += h_acc
         y[:] = y1
         y[6:10] /= np.sqrt(y[6] ** 2 + y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
         cnt[K_STEPS] += 1
-        touch = 0
-        for i in range(n):                             # contact switches at this point (simultaneous ones too)
-            if (g_prev[i] > 0.0 and g1[i] <= 0.0) or i == forced:
-                touch += 1
-                g_lo[i] = 1.0
-            else:
-                g_lo[i] = 0.0
         changed = _commit(geo, cells, mu, mem, contact, P, sliding, tilt, armed, y, energy, last, work, g1)
         if forced >= n:
             sliding[forced - n], changed = 1, True
@@ -444,12 +439,11 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                 H_d[k, i], H_f[k, i], H_X[k, i] = np.nan, 0.0, 0.0
         H_P[k, :, :] = P
         H_c[k] = contact
-        if touch == 0 and not changed:
+        if forced < 0 and not changed:
             K[0] = K[6]                               # first same as last: memory updates keep the force
         else:
-            for i in range(n):
-                if g_lo[i] > 0.0:
-                    switch(geo, cells, mem, contact, P, sliding, tilt, armed, y, i, last, work)
+            if 0 <= forced < n:
+                switch(geo, cells, mem, contact, P, sliding, tilt, armed, y, forced, last, work)
             rhs(*args, y, K[0], *work)
             cnt[K_RHS] += 1
         H_dy[k] = K[0]

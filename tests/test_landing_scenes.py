@@ -153,3 +153,16 @@ def test_study_input_errors_name_file_and_key(tmp_path):
     with pytest.raises(InputError) as e:
         read_study(tmp_path / "s.toml")
     assert "runs.csv" in str(e.value) and "configuration" in str(e.value) and "'7'" in str(e.value)
+
+
+def test_study_bad_value_names_the_run(tmp_path):
+    """A run-table value that makes a bad scene value is an InputError naming the scene key and the run."""
+    from alightsize.errors import InputError
+    from alightsize.study import read_study, run_study
+    (tmp_path / "runs.csv").write_text("run,configuration,slope\nR1,0,steep\n")
+    (tmp_path / "s.toml").write_text(f'[study]\nname = "s"\n[scenes]\n0 = "{Path(SCENES).resolve()}/flat_drop.toml"\n'
+                                     '[runs]\ntable = "runs.csv"\nscene = "configuration"\n'
+                                     '[runs.set]\n"terrain.slope" = "{slope} deg"\n')
+    with pytest.raises(InputError) as e:
+        run_study(read_study(tmp_path / "s.toml"))
+    assert "terrain.slope" in str(e.value) and "run R1" in str(e.value)
