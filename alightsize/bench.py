@@ -192,7 +192,8 @@ def run_bench(quick: bool = False, progress=print) -> dict:
     compile_s = time.perf_counter() - t0
     cases = []
     for cfg, t_sim in _scenes(quick):
-        ref = _metrics(simulate(cfg.scene, _controls(cfg, t_sim, rtol=1e-11, atol=1e-14, max_step=5e-4)))
+        ref = _metrics(simulate(cfg.scene, _controls(cfg, t_sim, rtol=1e-11, atol=1e-14, max_step=5e-4,
+                                                              event_tol=1e-9)))
         span = t_sim or ref["t_end"]
         progress(f"{cfg.name}: reference done ({span:.3f} s)")
         runs = [("dopri5", f"rtol={r:g}", dict(rtol=r, atol=r * 1e-3)) for r in ladder]

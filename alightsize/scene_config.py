@@ -207,7 +207,7 @@ def read_scene(path: str | Path, overrides: dict[str, object] | None = None) -> 
         if not -np.pi / 2 < slope < np.pi / 2:
             raise ter.error("slope", "a slope between -90 and 90 deg", f"{np.degrees(slope):.4g} deg")
     slope = slope or 0.0
-    lepk = rot(0, -slope)                               # kappa -> epsilon (eq. 1)
+    lepk = rot(0, slope)                                # kappa -> epsilon (eq. 1, LEPK): gravity (0, g sin, -g cos) (eq. 4-5)
 
     ini = root.table("initial")
     ini.allow(("velocity", "roll", "yaw", "pitch", "inclination", "inclination_azimuth", "rates", "note"))

@@ -12,7 +12,8 @@ opposes), which is defined whatever the tilt.
 
 A sticking footpad whose static limit is exceeded inside an integration step is held (`hold`) when
 mu_S > mu_D: the force would drop from mu_S FE3 to mu_D FE3 there, so the step loop locates the crossing of
-the margin mu_S FE3 - FE12 as an event and starts the slide on a step boundary.
+the margin mu_S FE3 + FLOOR - FE12 as an event and starts the slide on a step boundary (the FLOOR keeps a
+footpad unloading to zero, FE12 and FE3 both ~0, from crossing it at every lift-off).
 
 The report bracketed the crossing but lost runs when the crossing moved near lift-off ("ND", Table 4). Here
 the search always brackets: the footpad moves from the held position with growing steps until
@@ -82,7 +83,7 @@ def _dip(geo, cells, i, mem, mu, P0, d0, d1, a, b, r, R, v, w, P, defl, frc, X):
 @njit(cache=True)
 def footpad_force(geo, cells, i, mem, P0, sliding, hold, mu_s, mu_d, r, R, v, w, P, defl, frc, X, tol=1e-12):
     """Footpad position P and the leg's forces (written to defl, frc, X) with friction; returns
-    (sliding 0/1, cells' power, alpha, beta, static margin mu_S FE3 - FE12 at P0, reach deficit). P0 is the
+    (sliding 0/1, cells' power, alpha, beta, static margin mu_S FE3 + FLOOR - FE12 at P0, reach deficit). P0 is the
     footpad at the last accepted step; with `hold` a sticking footpad stays at P0 whatever the margin. The
     reach deficit (m) is 0 unless the slide ended at the edge of the leg's reach with friction still
     exceeded: then it is the excess there over the axial unloading rate, so that axial compression less
@@ -90,7 +91,7 @@ def footpad_force(geo, cells, i, mem, P0, sliding, hold, mu_s, mu_d, r, R, v, w,
     lifts off there)."""
     P[:] = P0
     fe12, fe3, fe1, fe2, power, alpha, beta = _ground(geo, cells, i, mem, P, r, R, v, w, defl, frc, X)
-    margin = mu_s * max(fe3, 0.0) - fe12
+    margin = mu_s * max(fe3, 0.0) + FLOOR - fe12
     if (hold and not sliding) or fe12 <= (mu_d if sliding else mu_s) * max(fe3, 0.0) + FLOOR:   # eq. 33-34
         return 0, power, alpha, beta, margin, 0.0
     h0 = fe12 - mu_d * max(fe3, 0.0)

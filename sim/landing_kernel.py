@@ -41,6 +41,7 @@ K_STEPS, K_REJECTED, K_RHS, K_HIST, K_EVENTS, K_TRIALS = range(6)
 # Run scalars (float array): step size, quiescence clock, reference momentum, first bottoming (t, leg, cell).
 S_H, S_QUIET, S_MOMENTUM, S_BOT_T, S_BOT_LEG, S_BOT_CELL = range(6)
 
+MAX_STALL = 100     # accepted steps in a row that do not advance time before the run is declared failed
 GTOL = 1e-12       # m: a contact event function this close above zero counts as there
 ARM = 1e-7          # m: a leg's next switch is armed once it is this far from its last one
 BAND = 1e-4         # m: an unarmed leg switches only this far past zero (grazing contact never chatters)
@@ -97,6 +98,8 @@ def _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y, dt, mt, g, ra
     (in the air) or axial compression beyond the set less the reach deficit (on the ground, from the leg
     state dt, mt already computed at y); an unarmed leg's threshold sits BAND past zero, so a footpad
     grazing the terrain stays put at zero force until it clearly leaves instead of switching every step.
+    Not so for a footpad slid to the edge of its reach (deficit > 0): it still carries force, beyond the
+    friction cone, so it leaves at once.
     g[n + i]: a sticking footpad's static margin mu_S FE3 - FE12 (N) when stick-to-slip is an event, else the
     constant 1."""
     n = len(contact)
@@ -107,7 +110,7 @@ def _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y, dt, mt, g, ra
             g[i] = dt[i, 0] - axial_set(cells, i, mem[i]) - mt[i, 1]
         else:
             g[i] = free_footpad(geo, cells, i, mem[i], tilt[i], y[0:3], R)[2]
-        if not (raw or armed[i]):
+        if not (raw or armed[i] or (contact[i] and mt[i, 1] > 0.0)):
             g[i] += BAND
         g[n + i] = mt[i, 0] if located and contact[i] and not sliding[i] else 1.0
 
@@ -334,6 +337,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
     h = ctl[C_FIXED] if fixed else run_state[S_H]
     t_final = ctl[C_TFINAL]
     e = 1.0
+    stalled = 0
     while t < t_final - 1e-15:
         if not np.isfinite(h) or h < 1e-14:
             return FAILED, t
@@ -420,6 +424,11 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                 _copy_work(work_lo, work)
         else:
             forced, h_acc = -1, h
+        # Watchdog: accepted steps that no longer advance time (a switching function crossing back and forth
+        # at one instant) end the run as failed instead of looping.
+        stalled = stalled + 1 if h_acc <= 1e-13 * max(1.0, abs(t)) else 0
+        if stalled > MAX_STALL:
+            return FAILED, t
         t += h_acc
         y[:] = y1
         y[6:10] /= np.sqrt(y[6] ** 2 + y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
@@ -449,6 +458,15 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
         H_dy[k] = K[0]
         cnt[K_HIST] = k + 1
         _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y, dt, mt, g_prev, False)
+        # A footpad that is out of reach from the start (a touchdown or slide start leaving it beyond the
+        # friction cone at the edge of its reach) never crosses zero from above: it leaves now.
+        for i in range(n):
+            if contact[i] and mt[i, 1] > 0.0 and g_prev[i] <= 0.0:
+                switch(geo, cells, mem, contact, P, sliding, tilt, armed, y, i, last, work)
+                rhs(*args, y, K[0], *work)
+                cnt[K_RHS] += 1
+                H_dy[k] = K[0]
+                _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y, dt, mt, g_prev, False)
         if fixed:
             h = ctl[C_FIXED]
         elif flight:

@@ -26,7 +26,7 @@ def _legs(radius=0.8, height=0.3, rho=0.77, small_angle=False):
 
 
 def _scene(v0=(0.0, 0.0, -V), q0=(1.0, 0, 0, 0), w0=(0.0, 0, 0), slope=0.0):
-    g = G * np.array([0.0, -np.sin(slope), -np.cos(slope)])
+    g = G * np.array([0.0, np.sin(slope), -np.cos(slope)])       # eq. 4-5
     return Scene(MASS, np.array([400.0, 400.0, 300.0]), _legs(), g, np.array(v0, float), np.array(q0, float),
                  np.array(w0, float))
 
