@@ -15,14 +15,13 @@ from pathlib import Path
 import numpy as np
 
 from sim.crush_cell import CellModel
-from sim.landing import Controls, Scene
+from sim.landing import G0, Controls, Scene
 from sim.rigid_body import matrix_quat
 from sim.telescoping_leg import TelescopingLeg
 
 from .config import Node, load_toml
 from .loads_config import read_curve
 
-G0 = 9.80665
 
 
 @dataclass(frozen=True)

@@ -100,7 +100,7 @@ def _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y, dt, mt, g, ra
     grazing the terrain stays put at zero force until it clearly leaves instead of switching every step.
     Not so for a footpad slid to the edge of its reach (deficit > 0): it still carries force, beyond the
     friction cone, so it leaves at once.
-    g[n + i]: a sticking footpad's static margin mu_S FE3 - FE12 (N) when stick-to-slip is an event, else the
+    g[n + i]: a sticking footpad's static margin mu_S FE3 + FLOOR - FE12 (N) when stick-to-slip is an event, else the
     constant 1."""
     n = len(contact)
     R = quat_matrix(y[6:10] / np.sqrt(y[6] ** 2 + y[7] ** 2 + y[8] ** 2 + y[9] ** 2))
