@@ -82,7 +82,7 @@ def scipy_landing(cfg: SceneConfig, ctl: Controls, method: str) -> tuple[dict, i
     def f(_t, yy):
         dy = np.zeros(14)
         lk.rhs(run.geo, run.cells, s.mass, s.inertia, s.gravity, run.mu, run.mem, run.contact, run.P, run.sliding,
-               yy, dy, *work)
+               run.shape, yy, dy, *work)
         return dy
 
     def events(yy, out):
@@ -91,7 +91,7 @@ def scipy_landing(cfg: SceneConfig, ctl: Controls, method: str) -> tuple[dict, i
 
     def _events(yy, out):
         """Event values at yy from the leg state the last evaluation of f left in `work`."""
-        lk._events(run.cells, run.geo, run.mu, run.mem, run.contact, run.sliding, run.tilt, run.armed, yy, work[2],
+        lk._events(run.cells, run.geo, run.mu, run.mem, run.contact, run.sliding, run.shape, run.armed, yy, work[2],
                    work[5], out, False)
         return out
 
@@ -99,10 +99,10 @@ def scipy_landing(cfg: SceneConfig, ctl: Controls, method: str) -> tuple[dict, i
         """Commit memory at an accepted state (event `which` if >= 0: a contact switch below n, a slide from
         n on, which the commit starts); the peak acceleration there."""
         dy = f(tt, yy)
-        started = lk._commit(run.geo, run.cells, run.mu, run.mem, run.contact, run.P, run.sliding, run.tilt,
+        started = lk._commit(run.geo, run.cells, run.mu, run.mem, run.contact, run.P, run.sliding, run.shape,
                              run.armed, yy, run.energy, run.last, work, g)
         if 0 <= which < n:
-            lk.switch(run.geo, run.cells, run.mem, run.contact, run.P, run.sliding, run.tilt, run.armed, yy, which,
+            lk.switch(run.geo, run.cells, run.mem, run.contact, run.P, run.sliding, run.shape, run.armed, yy, which,
                       run.last, work)
         if which >= 0 or started:
             dy = f(tt, yy)

@@ -47,6 +47,8 @@ def outcome(cfg: SceneConfig, res: Result) -> tuple[str, str]:
         return "tipped", f"nutation past the critical angle ({np.degrees(cfg.controls.tip_angle):.4g} deg)"
     if st == "body_contact":
         return "body_contact", "the body came within the clearance of the terrain"
+    if st == "member_strike":
+        return "body_contact", f"the intermediate member of leg {res.struck + 1} struck the terrain"
     if st == "failed":
         return "failed", "the step size collapsed or the state became non-finite"
     speed = float(np.hypot(*res.y[-1, 3:5]))

@@ -4,7 +4,7 @@ envelopes and the telescoping free body. Read and validated at the boundary; eve
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from math import radians
 from pathlib import Path
 
@@ -60,7 +60,7 @@ def read_curve(node: Node, extra: tuple[str, ...] = ()) -> CrushCurve:
     return CrushCurve(tuple(d), tuple(factor * x for x in f))
 
 
-def _geometry(node: Node) -> ArticulatedGeometry:
+def read_geometry(node: Node) -> ArticulatedGeometry:
     node.allow(LENGTHS + ("PHI", "return_spring_rate", "return_spring_preload", "note"))
     dims = {k: node.quantity(k, "length") if k in POSITIVE else node.quantity(k, "length", default=0.0, positive=False)
             for k in LENGTHS}
@@ -131,8 +131,8 @@ def _case(node: Node, geometry: ArticulatedGeometry | None, truss: TrussAngles |
         raise node.error("psi_final", "-90 deg < psi_initial < psi_final < 90 deg",
                          f"{np.degrees(p0):g} and {np.degrees(p1):g} deg")
     scale = node.number("length_scale", 1.0)
-    g = replace(geometry, **{k: scale * getattr(geometry, k) for k in LENGTHS})
-    g = replace(g, SPRG=node.quantity("return_spring_rate", "spring_rate", default=g.SPRG, positive=False),
+    g = geometry._replace(**{k: scale * getattr(geometry, k) for k in LENGTHS})
+    g = g._replace(SPRG=node.quantity("return_spring_rate", "spring_rate", default=g.SPRG, positive=False),
                 PLD=node.quantity("return_spring_preload", "force", default=g.PLD, positive=False))
     if g.SPRG < 0 or g.PLD < 0:
         raise node.error("return_spring_rate", "a return spring rate and preload of 0 or more", f"{g.SPRG}, {g.PLD}")
@@ -168,7 +168,7 @@ def read_loads(path: str | Path) -> LoadsConfig:
     units = rep.string("units", "US", choices=("US", "SI")) if rep else "US"
     if rep:
         rep.finish()
-    geometry = _geometry(root.table("geometry")) if root.has("geometry") else None
+    geometry = read_geometry(root.table("geometry")) if root.has("geometry") else None
     truss = _truss(root.table("truss")) if root.has("truss") else None
     grid = _grid(root.table("grid", optional=True))
     cases = tuple(_case(n, geometry, truss, root) for n in root.tables("configuration", optional=True))

@@ -17,10 +17,11 @@ import numpy as np
 from sim.crush_cell import CellModel
 from sim.landing import G0, Controls, Scene
 from sim.rigid_body import matrix_quat
+from sim.articulated_leg import ArticulatedLeg
 from sim.telescoping_leg import TelescopingLeg
 
 from .config import Node, load_toml
-from .loads_config import read_curve
+from .loads_config import LENGTHS, read_curve, read_geometry
 
 
 
@@ -82,35 +83,43 @@ def _cell(node: Node, factor: float = 1.0) -> CellModel:
     return CellModel(curve, k, c, factor, y)
 
 
+def _cell_name(node: Node, key: str, cells: dict[str, Node]) -> str:
+    name = node.string(key)
+    if name not in cells:
+        raise node.error(key, "the name of a [cells.NAME] table (" + ", ".join(sorted(cells)) + ")", repr(name))
+    return name
+
+
+def _factors(node: Node, n: int, n_cell: int, what: str) -> list[list[float]]:
+    factors = node.raw("cell_factors", None)
+    if factors is None:
+        return [[1.0] * n_cell for _ in range(n)]
+    ok = (isinstance(factors, list) and len(factors) == n and all(
+        isinstance(r, list) and len(r) == n_cell and all(isinstance(x, (int, float)) and not isinstance(x, bool)
+                                                            and x > 0 for x in r) for r in factors))
+    if not ok:
+        raise node.error("cell_factors", f"{n} arrays (one per leg) of {n_cell} positive force factors ({what})",
+                         repr(factors))
+    return [[float(x) for x in r] for r in factors]
+
+
 def _legs(node: Node, cells: dict[str, Node]) -> list[dict]:
     """A pattern of identical legs around the roll axis: count, radius, height, first azimuth."""
+    kind = node.string("kind", "telescoping", choices=("telescoping", "articulated"))
+    if kind == "articulated":
+        return _articulated_legs(node, cells)
     node.allow(("kind", "count", "radius", "height", "first_azimuth", "length", "pad_lever", "pad_angles", "axial",
                 "pads", "cell_factors", "small_angle", "note"))
-    node.string("kind", "telescoping", choices=("telescoping",))
-    n = node.integer("count", minimum=2)
-    radius = node.quantity("radius", "length")
-    height = node.quantity("height", "length", positive=False)
-    az0 = node.quantity("first_azimuth", "angle", 0.0, positive=False) if node.has("first_azimuth") else 0.0
+    n, radius, height, az0 = _pattern(node)
     rho = node.quantity("length", "length")
     lever = node.quantity("pad_lever", "length", 0.0, positive=False) if node.has("pad_lever") else 0.0
     angles_raw = node.raw("pad_angles", [])
     if not isinstance(angles_raw, list):
         raise node.error("pad_angles", "an array of angles", repr(angles_raw))
     angles = tuple(node.parse_quantity(f"pad_angles[{i}]", a, "angle", positive=False) for i, a in enumerate(angles_raw))
-    axial = node.string("axial")
-    pads = node.string("pads") if angles else ""
-    for key, name in (("axial", axial), ("pads", pads)):
-        if name and name not in cells:
-            raise node.error(key, "the name of a [cells.NAME] table (" + ", ".join(sorted(cells)) + ")", repr(name))
-    factors = node.raw("cell_factors", None)
-    n_cell = 1 + len(angles)
-    if factors is not None:
-        ok = (isinstance(factors, list) and len(factors) == n and all(
-            isinstance(r, list) and len(r) == n_cell and all(isinstance(x, (int, float)) and not isinstance(x, bool)
-                                                                and x > 0 for x in r) for r in factors))
-        if not ok:
-            raise node.error("cell_factors", f"{n} arrays (one per leg) of {n_cell} positive force factors "
-                             "(axial, then each pad)", repr(factors))
+    axial = _cell_name(node, "axial", cells)
+    pads = _cell_name(node, "pads", cells) if angles else ""
+    factors = _factors(node, n, 1 + len(angles), "axial, then each pad")
     small = node.boolean("small_angle", False)
     node.string("note", "")
     node.finish()
@@ -119,9 +128,40 @@ def _legs(node: Node, cells: dict[str, Node]) -> list[dict]:
     legs = []
     for i in range(n):
         az = az0 + 2 * np.pi * i / n
-        legs.append(dict(attach=np.array([radius * np.cos(az), radius * np.sin(az), height]), rho=rho, lever=lever,
-                         angles=angles, axial=axial, pads=pads, small=small,
-                         factors=factors[i] if factors is not None else [1.0] * n_cell))
+        legs.append(dict(kind=kind, attach=np.array([radius * np.cos(az), radius * np.sin(az), height]), rho=rho,
+                         lever=lever, angles=angles, axial=axial, pads=pads, small=small, factors=factors[i]))
+    return legs
+
+
+def _pattern(node: Node) -> tuple[int, float, float, float]:
+    n = node.integer("count", minimum=2)
+    radius = node.quantity("radius", "length")
+    height = node.quantity("height", "length", positive=False)
+    az0 = node.quantity("first_azimuth", "angle", 0.0, positive=False) if node.has("first_azimuth") else 0.0
+    return n, radius, height, az0
+
+
+def _articulated_legs(node: Node, cells: dict[str, Node]) -> list[dict]:
+    """Articulated legs (Sec. V.F): the leg origin (lower inboard parallelogram pivot) at radius and height, S1
+    outward along the azimuth, S3 along the roll axis; the geometry of Fig. 22-25 and the initial psi."""
+    node.allow(("kind", "count", "radius", "height", "first_azimuth", "geometry", "length_scale", "psi_initial",
+                "upper", "lower", "cell_factors", "note"))
+    n, radius, height, az0 = _pattern(node)
+    geometry = read_geometry(node.table("geometry"))
+    scale = node.number("length_scale", 1.0)
+    geometry = geometry._replace(**{k: scale * getattr(geometry, k) for k in LENGTHS})   # test-model scaling (Table 27)
+    psi0 = node.quantity("psi_initial", "angle", positive=False)
+    if not -np.pi / 2 < psi0 < np.pi / 2:
+        raise node.error("psi_initial", "an angle between -90 and 90 deg", f"{np.degrees(psi0):.4g} deg")
+    upper, lower = _cell_name(node, "upper", cells), _cell_name(node, "lower", cells)
+    factors = _factors(node, n, 2, "upper, lower")
+    node.string("note", "")
+    node.finish()
+    legs = []
+    for i in range(n):
+        az = az0 + 2 * np.pi * i / n
+        legs.append(dict(kind="articulated", attach=np.array([radius * np.cos(az), radius * np.sin(az), height]),
+                         azimuth=az, geometry=geometry, psi0=psi0, upper=upper, lower=lower, factors=factors[i]))
     return legs
 
 
@@ -135,11 +175,40 @@ def _inclination_attitude(roll: float, theta: float, azimuth: float) -> tuple[fl
     return float(yaw), float(pitch)
 
 
+MAX_BASES = 8
+
+
+def _merge(base: dict, over: dict) -> dict:
+    """Tables of `over` merged key by key into those of `base`; any other value replaces."""
+    out = dict(base)
+    for k, v in over.items():
+        out[k] = _merge(out[k], v) if isinstance(v, dict) and isinstance(out.get(k), dict) else v
+    return out
+
+
+def load_scene_toml(path: Path, depth: int = 0) -> Node:
+    """The scene TOML with its `scene.base` chain (a scene it varies, path relative to it) merged under it."""
+    root = load_toml(path)
+    head = root.data.get("scene")
+    if not (isinstance(head, dict) and "base" in head):
+        return root
+    base = head["base"]
+    base_path = path.parent / base if isinstance(base, str) else None
+    if base_path is None or not base_path.is_file():
+        raise root.error("scene.base", "the path of a scene TOML (relative to this one)", repr(base))
+    if depth >= MAX_BASES:
+        raise root.error("scene.base", f"at most {MAX_BASES} nested bases", "a longer chain (a cycle?)")
+    data = _merge(load_scene_toml(base_path, depth + 1).data, root.data)
+    data["scene"] = {k: v for k, v in head.items() if k != "base"}    # name and title are not inherited
+    return Node(path, "", data)
+
+
 def read_scene(path: str | Path, overrides: dict[str, object] | None = None) -> SceneConfig:
     """Read and validate a scene config, with `overrides` (dotted key path -> TOML value, e.g.
-    {"terrain.slope": "-20 deg"}) applied first; problems are InputErrors naming file and key path."""
+    {"terrain.slope": "-20 deg"}) applied first; problems are InputErrors naming file and key path. A scene
+    may vary another (`[scene] base = "other.toml"`): its tables are merged key by key over the base's."""
     path = Path(path)
-    root = load_toml(path)
+    root = load_scene_toml(path)
     for key, value in (overrides or {}).items():
         root.set_path(key, value)
     root.allow(("scene", "capsule", "cells", "legs", "terrain", "initial", "controls", "output"))
@@ -182,6 +251,14 @@ def read_scene(path: str | Path, overrides: dict[str, object] | None = None) -> 
     legs, names = [], []
     for spec in leg_specs:
         f = spec["factors"]
+        if spec["kind"] == "articulated":
+            up, lo = models[spec["upper"]], models[spec["lower"]]
+            legs.append(ArticulatedLeg(to_geo.T @ (spec["attach"] - cg), to_geo.T @ rot(2, spec["azimuth"]),
+                                       spec["geometry"], spec["psi0"],
+                                       CellModel(up.curve, up.k, up.c, f[0], up.yield_force),
+                                       CellModel(lo.curve, lo.k, lo.c, f[1], lo.yield_force)))
+            names.append(("upper", "lower"))
+            continue
         ax = models[spec["axial"]]
         axial = CellModel(ax.curve, ax.k, ax.c, f[0], ax.yield_force)
         pads = []
@@ -248,7 +325,7 @@ def read_scene(path: str | Path, overrides: dict[str, object] | None = None) -> 
     return SceneConfig(path, name, title, scene, c, to_geo, lepk, interval, srs_damping, tuple(names))
 
 
-def _controls(node: Node | None, mass: float, legs: list[TelescopingLeg]) -> Controls:
+def _controls(node: Node | None, mass: float, legs: list[TelescopingLeg | ArticulatedLeg]) -> Controls:
     if node is None:
         return Controls()
     node.allow(("t_final", "rtol", "atol", "fixed_step", "max_step", "event_tol", "tip_angle", "taus",
@@ -275,8 +352,7 @@ def _controls(node: Node | None, mass: float, legs: list[TelescopingLeg]) -> Con
         raise node.error("taus", "a number of periods >= 0", f"{taus}")
     if rtol >= 1:
         raise node.error("rtol", "a relative tolerance below 1", f"{rtol}")
-    k_axial = legs[0].axial.k
-    period = float(np.pi * np.sqrt(mass / k_axial))    # TAU = pi sqrt(M / SLOPE(1)) (FUNEV, line 6692)
+    period = float(np.pi * np.sqrt(mass / legs[0].cells[0].k))    # TAU = pi sqrt(M / SLOPE(1)) (FUNEV, line 6692)
     return Controls(t_final=t_final, rtol=rtol, atol=atol, fixed_step=fixed, max_step=max_step, event_tol=event_tol,
                     tip_angle=tip, taus=taus, period=period, stop_on_bottoming=stop, energy_check_from=energy_t,
                     closed_form_flight=flight)

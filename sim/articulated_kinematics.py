@@ -8,21 +8,22 @@ never jumps to another branch at a root crossing. SI units, angles in radians, n
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
+from numba import njit
 from scipy.optimize import brentq, minimize_scalar
 
 
-@dataclass(frozen=True)
-class ArticulatedGeometry:
+class ArticulatedGeometry(NamedTuple):
     """Lengths (m) and angle (rad) of Fig. 22-25, FORTRAN names (GUIDE.md table).
 
     AU parallelogram member, AO peg-leg axis offset from the lower outboard pivot, AS fulcrum-ring lever
     arm, AL peg-leg height, AE drop from the lower outboard pivot to the ring plane; AD pivot spacing at
     angle PHI from vertical; AA, AB inboard and AH, AG outboard offsets of the upper cell; AP, AQ the
     lower cell's attachments above and below the ring plane; SPRG, PLD return spring rate (N/m) and
-    preload (N). Only the first five enter the footpad kinematics.
+    preload (N). Only the first five enter the footpad kinematics. A named tuple of floats, so the
+    compiled simulator takes the same object as the vectorized loads code.
     """
 
     AU: float
@@ -42,11 +43,13 @@ class ArticulatedGeometry:
     PLD: float = 0.0
 
 
+@njit(cache=True)
 def tip_radius(g: ArticulatedGeometry, alpha):
     """Horizontal reach of the peg-leg tip about its axis, AS - AS cos(alpha) + AL sin(alpha) (eq. 38-39)."""
     return g.AS * (1 - np.cos(alpha)) + g.AL * np.sin(alpha)
 
 
+@njit(cache=True)
 def footpad(g: ArticulatedGeometry, alpha, beta, psi):
     """Footpad position (S1', S2', S3') in the leg frame (eq. 38-40, FORCE)."""
     r = tip_radius(g, alpha)
@@ -55,17 +58,102 @@ def footpad(g: ArticulatedGeometry, alpha, beta, psi):
             g.AU * np.sin(psi) - g.AE - g.AS * np.sin(alpha) - g.AL * np.cos(alpha))
 
 
+@njit(cache=True)
 def _sin_psi(g, s3, alpha):
     """sin(psi) from the vertical equation: (AS sin a + AL cos a + S3 + AE) / AU (FORCE)."""
     return (g.AS * np.sin(alpha) + g.AL * np.cos(alpha) + s3 + g.AE) / g.AU
 
 
+@njit(cache=True)
+def residual_at(g: ArticulatedGeometry, s0: float, s1: float, s2: float, alpha: float) -> float:
+    """F(alpha) = (S1 - AO - AU cos psi)^2 + S2^2 - r(alpha)^2 for the footpad (s0, s1, s2): zero at a
+    consistent alpha, NaN where the vertical equation has no psi (|sin psi| > 1). Its roots are those of the
+    report's quartic eq. 41 without the extraneous ones squaring adds."""
+    sp = _sin_psi(g, s2, alpha)
+    if abs(sp) > 1.0:
+        return np.nan
+    r = tip_radius(g, alpha)
+    return (s0 - g.AO - g.AU * np.sqrt(1.0 - sp * sp)) ** 2 + s1 * s1 - r * r
+
+
 def residual(g: ArticulatedGeometry, s, alpha):
-    """F(alpha) = (S1 - AO - AU cos psi)^2 + S2^2 - r(alpha)^2, zero at a consistent alpha; NaN where the
-    vertical equation has no psi (|sin psi| > 1). Its roots are those of the report's quartic eq. 41."""
-    sp = _sin_psi(g, s[2], alpha)
-    cp = np.sqrt(np.where(np.abs(sp) <= 1, 1 - sp * sp, np.nan))
-    return (s[0] - g.AO - g.AU * cp) ** 2 + s[1] ** 2 - tip_radius(g, alpha) ** 2
+    """`residual_at` over an array of alpha."""
+    a = np.asarray(alpha, float)
+    out = np.array([residual_at(g, float(s[0]), float(s[1]), float(s[2]), float(x)) for x in a.ravel()])
+    return out.reshape(a.shape) if a.ndim else float(out[0])
+
+
+ALPHA_MAX = np.pi / 2       # eq. 42: alpha in [0, pi/2]
+
+
+@njit(cache=True)
+def nearest_root(g: ArticulatedGeometry, s0: float, s1: float, s2: float, alpha_prev: float,
+                 tol: float = 1e-13) -> float:
+    """The root of F nearest alpha_prev in [0, ALPHA_MAX], or -1 if there is none (out of reach): steps
+    doubling from alpha_prev on both sides until F changes sign (the nearer crossing wins), then Illinois
+    false position. The simulator's SINALP: it follows one branch through a crossing of the quartic's roots,
+    since F has no extraneous roots; a double root (two roots meeting and vanishing) is not found."""
+    a0 = min(max(alpha_prev, 0.0), ALPHA_MAX)
+    f0 = residual_at(g, s0, s1, s2, a0)
+    if f0 == 0.0:
+        return a0
+    up_a, up_f, dn_a, dn_f = a0, f0, a0, f0
+    up, dn = a0 < ALPHA_MAX, a0 > 0.0
+    step = 1e-3
+    lo = hi = -1.0
+    f_lo = f_hi = 0.0
+    for _ in range(64):
+        if not (up or dn):
+            return -1.0
+        best = np.inf
+        if up:
+            a = min(up_a + step, ALPHA_MAX)
+            f = residual_at(g, s0, s1, s2, a)
+            if np.isfinite(f) and np.isfinite(up_f) and f * up_f <= 0.0:
+                best = up_a - a0 + (a - up_a) * up_f / (up_f - f) if up_f != f else a - a0
+                lo, hi, f_lo, f_hi = up_a, a, up_f, f
+            elif not np.isfinite(f) and np.isfinite(up_f):
+                up = False
+            up_a, up_f = a, f
+            up = up and a < ALPHA_MAX
+        if dn:
+            a = max(dn_a - step, 0.0)
+            f = residual_at(g, s0, s1, s2, a)
+            if np.isfinite(f) and np.isfinite(dn_f) and f * dn_f <= 0.0:
+                dist = a0 - dn_a + (dn_a - a) * dn_f / (dn_f - f) if dn_f != f else a0 - a
+                if dist < best:
+                    best = dist
+                    lo, hi, f_lo, f_hi = a, dn_a, f, dn_f
+            elif not np.isfinite(f) and np.isfinite(dn_f):
+                dn = False
+            dn_a, dn_f = a, f
+            dn = dn and a > 0.0
+        if best < np.inf:
+            break
+        step *= 2.0
+    if lo < 0.0:
+        return -1.0
+    side = 0
+    for _ in range(100):
+        if f_lo == 0.0:
+            return lo
+        if f_hi == 0.0 or hi - lo <= tol:
+            return hi
+        m = hi - f_hi * (hi - lo) / (f_hi - f_lo)
+        if not (lo < m < hi):
+            m = 0.5 * (lo + hi)
+        fm = residual_at(g, s0, s1, s2, m)
+        if fm * f_lo > 0.0:
+            lo, f_lo = m, fm
+            if side == 1:
+                f_hi *= 0.5
+            side = 1
+        else:
+            hi, f_hi = m, fm
+            if side == -1:
+                f_lo *= 0.5
+            side = -1
+    return 0.5 * (lo + hi)
 
 
 class Unreachable(ValueError):

@@ -13,6 +13,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+from numba import njit
 
 from .articulated_cells import lower_force_components, lower_lever, upper_angle
 from .articulated_kinematics import ArticulatedGeometry
@@ -97,13 +98,20 @@ def ground_force(g: ArticulatedGeometry, alpha, beta, psi, af1, af2):
 
 
 def _ground(g: ArticulatedGeometry, t: _Terms):
-    c18 = g.AS * t.sa + g.AL * t.ca
-    c20 = g.AL * t.sa - g.AS * t.ca
-    c25 = (t.se * t.cp - t.ce * t.sp) * t.af1            # sin(eta - psi) AF1
-    c17 = 1.0 / (t.sp * t.cb * c20 + t.cp * c18)
-    f1 = (t.cp * t.fp4 - c20 * c25) * t.cb * c17
-    f3 = (t.sp * t.fp4 * t.cb + c18 * c25) * c17
-    f2 = (t.fp4 - c20 * f3) * t.sb / c18
+    return ground_components(g, t.sa, t.ca, t.sb, t.cb, t.sp, t.cp, (t.se * t.cp - t.ce * t.sp) * t.af1, t.fp4)
+
+
+@njit(cache=True)
+def ground_components(g: ArticulatedGeometry, sa, ca, sb, cb, sp, cp, c25, fp4):
+    """(F1, F2, F3) from the upper cell's force normal to the links, C25 = sin(eta - psi) AF1, and the lower
+    cell's moment about the ring edge FP4 (eq. 59-61 as FORCE codes them; scalars or arrays). They are the
+    virtual-work equilibrium F . d(tip)/dq = generalized cell force for q = psi, alpha, beta."""
+    c18 = g.AS * sa + g.AL * ca
+    c20 = g.AL * sa - g.AS * ca
+    c17 = 1.0 / (sp * cb * c20 + cp * c18)
+    f1 = (cp * fp4 - c20 * c25) * cb * c17
+    f3 = (sp * fp4 * cb + c18 * c25) * c17
+    f2 = (fp4 - c20 * f3) * sb / c18
     return f1, f2, f3
 
 

@@ -1,4 +1,4 @@
-"""Footpad slip on the terrain (AFFDL-TR-66-33 Sec. V.E.5, eq. 31-37, subroutine SLIP).
+"""Footpad slip on the terrain (AFFDL-TR-66-33 Sec. V.E.5, eq. 31-37, subroutine SLIP; Sec. V.F for either leg).
 
 The ground force is first computed with the footpad where it was at the last accepted step. If its in-plane
 part FE12 exceeds the potential friction force (mu_S FE3 while sticking, mu_D FE3 while sliding; eq. 32-34),
@@ -17,9 +17,9 @@ footpad unloading to zero, FE12 and FE3 both ~0, from crossing it at every lift-
 
 The report bracketed the crossing but lost runs when the crossing moved near lift-off ("ND", Table 4). Here
 the search always brackets: the footpad moves from the held position with growing steps until
-FE12 <= mu_D FE3 or it leaves the leg's reach (a leg longer than its free length, axial deflection short of
-the permanent set, would have lifted off; every direction in the plane leaves the reach within two leg
-lengths), where it counts as infeasible. Bisection while one end is out of reach, then false position with
+FE12 <= mu_D FE3 or it leaves the leg's reach (the main cell, telescoping axial or articulated upper, short of
+its permanent set, or no articulated root: the leg would have lifted off; every direction in the plane leaves
+the reach within two leg lengths), where it counts as infeasible. Bisection while one end is out of reach, then false position with
 the Illinois modification, closes on the crossing; the answer is always a contact point within reach on the
 friction-feasible side, or the edge of the reach (the lift-off event then takes over).
 """
@@ -29,7 +29,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from .telescoping_leg import axial_set, leg_force
+from .legs import leg_force, main_set
 from .vec3 import mv
 
 MAX_EXPAND = 200
@@ -39,31 +39,31 @@ FLOOR = 1e-6        # N: in-plane force below this never starts a slide (round-o
 
 
 @njit(cache=True)
-def _ground(geo, cells, i, mem, P, r, R, v, w, defl, frc, X):
-    """(FE12, FE3, FE1, FE2, cells' power, alpha, beta) with the footpad at P."""
-    power, alpha, beta, _ = leg_force(geo, cells, i, mem, P, r, R, v, w, defl, frc, X)
+def _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, X):
+    """(FE12, FE3, FE1, FE2, cells' power, alpha, beta, psi) with the footpad at P."""
+    power, alpha, beta, psi = leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, X)
     fe = mv(R, X[0], X[1], X[2])                                # eq. 31
-    return np.sqrt(fe[0] * fe[0] + fe[1] * fe[1]), fe[2], fe[0], fe[1], power, alpha, beta   # eq. 32
+    return np.sqrt(fe[0] * fe[0] + fe[1] * fe[1]), fe[2], fe[0], fe[1], power, alpha, beta, psi   # eq. 32
 
 
 @njit(cache=True)
-def _at(geo, cells, i, mem, mu, P0, d0, d1, s, r, R, v, w, P, defl, frc, X):
+def _at(geo, cells, i, mem, shape, mu, P0, d0, d1, s, r, R, v, w, P, defl, frc, X):
     """Excess FE12 - mu FE3 and force scale with the footpad at P0 + s d; False out of the leg's reach."""
     P[0], P[1], P[2] = P0[0] + s * d0, P0[1] + s * d1, 0.0
-    fe12, fe3, _, _, _, _, _ = _ground(geo, cells, i, mem, P, r, R, v, w, defl, frc, X)
-    if defl[0] < axial_set(cells, i, mem):
+    fe12, fe3, _, _, _, _, _, _ = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, X)
+    if defl[0] < main_set(cells, i, mem):
         return -1.0, 0.0, False
     return fe12 - mu * max(fe3, 0.0), fe12 + abs(fe3), True
 
 
 @njit(cache=True)
-def _dip(geo, cells, i, mem, mu, P0, d0, d1, a, b, r, R, v, w, P, defl, frc, X):
+def _dip(geo, cells, i, mem, shape, mu, P0, d0, d1, a, b, r, R, v, w, P, defl, frc, X):
     """Golden-section search for the lowest excess between a and b, stopping at the first point where it is
     not positive; returns (s, excess)."""
     k = 0.3819660112501051
     c, d = a + k * (b - a), b - k * (b - a)
-    hc, _, okc = _at(geo, cells, i, mem, mu, P0, d0, d1, c, r, R, v, w, P, defl, frc, X)
-    hd, _, okd = _at(geo, cells, i, mem, mu, P0, d0, d1, d, r, R, v, w, P, defl, frc, X)
+    hc, _, okc = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, c, r, R, v, w, P, defl, frc, X)
+    hd, _, okd = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, d, r, R, v, w, P, defl, frc, X)
     for _ in range(MAX_DIP):
         if okc and hc <= 0.0:
             return c, hc
@@ -72,31 +72,31 @@ def _dip(geo, cells, i, mem, mu, P0, d0, d1, a, b, r, R, v, w, P, defl, frc, X):
         if not okd or hc < hd:
             b, d, hd, okd = d, c, hc, okc
             c = a + k * (b - a)
-            hc, _, okc = _at(geo, cells, i, mem, mu, P0, d0, d1, c, r, R, v, w, P, defl, frc, X)
+            hc, _, okc = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, c, r, R, v, w, P, defl, frc, X)
         else:
             a, c, hc, okc = c, d, hd, okd
             d = b - k * (b - a)
-            hd, _, okd = _at(geo, cells, i, mem, mu, P0, d0, d1, d, r, R, v, w, P, defl, frc, X)
+            hd, _, okd = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, d, r, R, v, w, P, defl, frc, X)
     return c, hc if okc else 1.0
 
 
 @njit(cache=True)
-def footpad_force(geo, cells, i, mem, P0, sliding, hold, mu_s, mu_d, r, R, v, w, P, defl, frc, X, tol=1e-12):
+def footpad_force(geo, cells, i, mem, shape, P0, sliding, hold, mu_s, mu_d, r, R, v, w, P, defl, frc, X, tol=1e-12):
     """Footpad position P and the leg's forces (written to defl, frc, X) with friction; returns
-    (sliding 0/1, cells' power, alpha, beta, static margin mu_S FE3 + FLOOR - FE12 at P0, reach deficit). P0 is the
+    (sliding 0/1, cells' power, alpha, beta, psi, static margin mu_S FE3 + FLOOR - FE12 at P0, reach deficit). P0 is the
     footpad at the last accepted step; with `hold` a sticking footpad stays at P0 whatever the margin. The
     reach deficit (m) is 0 unless the slide ended at the edge of the leg's reach with friction still
-    exceeded: then it is the excess there over the axial unloading rate, so that axial compression less
+    exceeded: then it is the excess there over the main cell's unloading rate, so that its compression less
     the deficit falls through zero continuously when the last feasible position leaves the reach (the leg
     lifts off there)."""
     P[:] = P0
-    fe12, fe3, fe1, fe2, power, alpha, beta = _ground(geo, cells, i, mem, P, r, R, v, w, defl, frc, X)
+    fe12, fe3, fe1, fe2, power, alpha, beta, psi = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, X)
     margin = mu_s * max(fe3, 0.0) + FLOOR - fe12
     if (hold and not sliding) or fe12 <= (mu_d if sliding else mu_s) * max(fe3, 0.0) + FLOOR:   # eq. 33-34
-        return 0, power, alpha, beta, margin, 0.0
+        return 0, power, alpha, beta, psi, margin, 0.0
     h0 = fe12 - mu_d * max(fe3, 0.0)
     if h0 <= 0.0:                                               # static limit exceeded, dynamic one not
-        return 1, power, alpha, beta, margin, 0.0
+        return 1, power, alpha, beta, psi, margin, 0.0
     d0, d1 = -fe1 / fe12, -fe2 / fe12                           # the leg's push on the footpad
     # Expand until the excess changes sign or the footpad leaves the leg's reach: steps growing fourfold, or
     # just past the secant's root when that is nearer, so that the nearest crossing (the one continuous with
@@ -112,13 +112,13 @@ def footpad_force(geo, cells, i, mem, P0, sliding, hold, mu_s, mu_d, r, R, v, w,
             root = s_lo + h_lo * (s_lo - s_prev) / (h_prev - h_lo)
             aimed = root < s_hi
             s_hi = min(s_hi, s_lo + 1.2 * (root - s_lo))
-        h_hi, _, ok_hi = _at(geo, cells, i, mem, mu_d, P0, d0, d1, s_hi, r, R, v, w, P, defl, frc, X)
+        h_hi, _, ok_hi = _at(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_hi, r, R, v, w, P, defl, frc, X)
         if h_hi <= 0.0:
             break
         if aimed:
             # The secant promised a crossing and h came back positive: a narrow dip (a pad unloading to zero
             # turns h back up) may lie in between. Golden-section search for its bottom.
-            s_m, h_m = _dip(geo, cells, i, mem, mu_d, P0, d0, d1, s_lo, s_hi, r, R, v, w, P, defl, frc, X)
+            s_m, h_m = _dip(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_lo, s_hi, r, R, v, w, P, defl, frc, X)
             if h_m <= 0.0:
                 s_hi, h_hi, ok_hi = s_m, h_m, True
                 break
@@ -135,7 +135,7 @@ def footpad_force(geo, cells, i, mem, P0, sliding, hold, mu_s, mu_d, r, R, v, w,
                 s_m = 0.5 * (s_lo + s_hi)
         else:
             s_m = 0.5 * (s_lo + s_hi)
-        h_m, scale_m, ok_m = _at(geo, cells, i, mem, mu_d, P0, d0, d1, s_m, r, R, v, w, P, defl, frc, X)
+        h_m, scale_m, ok_m = _at(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_m, r, R, v, w, P, defl, frc, X)
         if ok_m and abs(h_m) <= tol * (scale_m + 1.0):
             s_lo, s_hi, ok_hi = s_m, s_m, True
             break
@@ -151,6 +151,6 @@ def footpad_force(geo, cells, i, mem, P0, sliding, hold, mu_s, mu_d, r, R, v, w,
             side = -1
     s_end = s_hi if ok_hi else s_lo
     P[0], P[1], P[2] = P0[0] + s_end * d0, P0[1] + s_end * d1, 0.0
-    fe12, fe3, _, _, power, alpha, beta = _ground(geo, cells, i, mem, P, r, R, v, w, defl, frc, X)
+    fe12, fe3, _, _, power, alpha, beta, psi = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, X)
     deficit = 0.0 if ok_hi else max(fe12 - mu_d * max(fe3, 0.0), 0.0) / cells[3][i, 0]
-    return 1, power, alpha, beta, margin, deficit
+    return 1, power, alpha, beta, psi, margin, deficit

@@ -1,4 +1,4 @@
-"""One landing of a rigid capsule on telescoping legs (AFFDL-TR-66-33 Sec. V).
+"""One landing of a rigid capsule on telescoping or articulated legs (AFFDL-TR-66-33 Sec. V).
 
 `simulate(scene, controls)` places the capsule so that its lowest footpad touches the terrain at t = 0 and
 runs the compiled step loop (`landing_kernel.run`; free flight of an axisymmetric capsule in closed form).
@@ -16,7 +16,9 @@ from . import crush_cell
 from . import landing_kernel as lk
 from .rigid_body import quat_matrix
 from .stability import quiescence_momenta
-from .telescoping_leg import TelescopingLeg, free_footpad, pack
+from .articulated_leg import ArticulatedLeg
+from .legs import free_footpad, initial_shape, pack
+from .telescoping_leg import TelescopingLeg
 
 G0 = 9.80665
 
@@ -30,7 +32,7 @@ class Scene:
 
     mass: float
     inertia: np.ndarray
-    legs: tuple[TelescopingLeg, ...]
+    legs: tuple[TelescopingLeg | ArticulatedLeg, ...]
     gravity: np.ndarray
     v0: np.ndarray
     q0: np.ndarray
@@ -78,6 +80,7 @@ class Result:
     contact: np.ndarray                # (n, legs)
     status: str
     bottomed: tuple | None             # (time, leg, cell) of the first bottoming
+    struck: int | None                 # the leg whose intermediate member struck the terrain
     cell_energy: np.ndarray            # (legs, cells) J
     memory: np.ndarray                 # (legs, cells, 2) final dmax, fmax
     steps: int
@@ -104,7 +107,7 @@ def accel_g(y: np.ndarray, dy: np.ndarray, gravity: np.ndarray) -> np.ndarray:
 
 
 STATUS = {lk.END: "end", lk.BOTTOMED: "bottomed", lk.TIPPED: "tipped", lk.BODY: "body_contact",
-          lk.QUIET: "quiet", lk.FAILED: "failed", lk.STABLE: "stable"}
+          lk.QUIET: "quiet", lk.FAILED: "failed", lk.STABLE: "stable", lk.MEMBER: "member_strike"}
 
 
 def axisymmetric(inertia: np.ndarray) -> bool:
@@ -128,14 +131,14 @@ class _Run:
         self.contact = np.zeros(n, np.int64)
         self.P = np.zeros((n, 3))
         self.sliding = np.zeros(n, np.int64)
-        self.tilt = np.zeros((n, 2))
+        self.shape = initial_shape(scene.legs)
         self.armed = np.zeros(n, np.int64)
         self.energy = np.zeros((n, C))
         self.last = np.zeros((n, 2 * C + 1))
         self.work = (np.zeros((n, 3)), np.zeros(n, np.int64), np.zeros((n, C)), np.zeros((n, C)), np.zeros((n, 3)),
-                     np.zeros((n, 2)))
+                     np.zeros((n, 5)))
         self.cnt = np.zeros(6, np.int64)
-        self.run_state = np.array([ctl.first_step, 0.0, 0.0, -1.0, -1.0, -1.0])
+        self.run_state = np.array([ctl.first_step, 0.0, 0.0, -1.0, -1.0, -1.0, -1.0])
         self.ctl_arr = np.array([ctl.t_final, ctl.rtol, ctl.atol, ctl.fixed_step or 0.0, ctl.max_step, ctl.event_tol,
                                  float(ctl.stop_on_bottoming), np.cos(ctl.tip_angle), ctl.body_clearance,
                                  float(ctl.closed_form_flight and axisymmetric(scene.inertia)), ctl.quiet_fraction,
@@ -175,18 +178,18 @@ class _Run:
         s = self.scene
         dy = np.zeros(14)
         lk.rhs(self.geo, self.cells, s.mass, s.inertia, s.gravity, self.mu, self.mem, self.contact, self.P,
-               self.sliding, y, dy, *self.work)
+               self.sliding, self.shape, y, dy, *self.work)
         return dy
 
     def heights(self, r: np.ndarray, R: np.ndarray) -> np.ndarray:
-        return np.array([free_footpad(self.geo, self.cells, i, self.mem[i], self.tilt[i], r, R)[2]
+        return np.array([free_footpad(self.geo, self.cells, i, self.mem[i], self.shape[i], r, R)[2]
                          for i in range(self.n)])
 
     def loop(self, y: np.ndarray, t: float) -> tuple[int, float]:
         s = self.scene
         while True:
             status, t = lk.run(self.geo, self.cells, s.mass, s.inertia, s.gravity, self.mu, self.bottoming, s.up,
-                               s.body_points, self.order, self.mem, self.contact, self.P, self.sliding, self.tilt, self.armed,
+                               s.body_points, self.order, self.mem, self.contact, self.P, self.sliding, self.shape, self.armed,
                                self.energy, self.last, y, t, self.ctl_arr, self.cnt, self.run_state, self.H_t,
                                self.H_y, self.H_dy, self.H_d, self.H_f, self.H_X, self.H_P, self.H_c)
             if status == lk.BUFFER:
@@ -203,7 +206,7 @@ def initial_state(scene: Scene, run: _Run) -> np.ndarray:
     r0 = np.array([0.0, 0.0, -heights.min()])
     y0 = np.concatenate([r0, scene.v0, scene.q0, scene.omega0, [0.0]])
     for i in np.where(heights - heights.min() <= 1e-12)[0]:
-        lk.switch(run.geo, run.cells, run.mem, run.contact, run.P, run.sliding, run.tilt, run.armed, y0, int(i),
+        lk.switch(run.geo, run.cells, run.mem, run.contact, run.P, run.sliding, run.shape, run.armed, y0, int(i),
                   run.last, run.work)
     return y0
 
@@ -244,7 +247,8 @@ def simulate(scene: Scene, ctl: Controls) -> Result:
     rs = run.run_state
     bottomed = (float(rs[lk.S_BOT_T]), int(rs[lk.S_BOT_LEG]), int(rs[lk.S_BOT_CELL])) if rs[lk.S_BOT_T] >= 0 else None
     res = Result(run.H_t[:k].copy(), Y, run.H_dy[:k].copy(), run.H_d[:k].copy(), run.H_f[:k].copy(),
-                 run.H_X[:k].copy(), run.H_P[:k].copy(), run.H_c[:k].copy(), STATUS[status], bottomed, cell,
+                 run.H_X[:k].copy(), run.H_P[:k].copy(), run.H_c[:k].copy(), STATUS[status], bottomed,
+                 int(rs[lk.S_STRUCK]) if status == lk.MEMBER else None, cell,
                  run.mem.copy(), int(run.cnt[lk.K_STEPS]), int(run.cnt[lk.K_REJECTED]),
                  int(run.cnt[lk.K_RHS]), int(run.cnt[lk.K_EVENTS]), int(run.cnt[lk.K_TRIALS]), wall, en,
                  scene.gravity)

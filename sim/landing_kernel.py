@@ -19,7 +19,7 @@ from . import crush_cell
 from .footpad_slip import FLOOR, footpad_force
 from .rigid_body import free_flight, quat_matrix, quat_rate
 from .stability import quiescence_momenta, quiescence_update, stable_by_energy, tipping_margins
-from .telescoping_leg import axial_set, free_footpad, leg_force
+from .legs import free_footpad, leg_force, lift_shape, main_set, member_strike
 from .vec3 import cross, mtv, mv
 
 # Dormand-Prince 5(4).
@@ -32,14 +32,15 @@ B4 = np.array([5179 / 57600, 0, 7571 / 16695, 393 / 640, -92097 / 339200, 187 / 
 NY = 14
 
 # Statuses returned to the caller.
-END, BUFFER, BOTTOMED, TIPPED, BODY, QUIET, FAILED, STABLE = 0, 2, 3, 4, 5, 6, 7, 8
+END, BUFFER, BOTTOMED, TIPPED, BODY, QUIET, FAILED, STABLE, MEMBER = 0, 2, 3, 4, 5, 6, 7, 8, 9
 # Controls (float array).
 C_TFINAL, C_RTOL, C_ATOL, C_FIXED, C_MAXSTEP, C_EVENTTOL, C_STOPBOTTOM, C_TIPCOS, C_CLEAR, C_FLIGHT, \
     C_QUIET_FRAC, C_TAUS, C_PERIOD, C_ENERGY_T = range(14)
 # Counters (int array).
 K_STEPS, K_REJECTED, K_RHS, K_HIST, K_EVENTS, K_TRIALS = range(6)
-# Run scalars (float array): step size, quiescence clock, reference momentum, first bottoming (t, leg, cell).
-S_H, S_QUIET, S_MOMENTUM, S_BOT_T, S_BOT_LEG, S_BOT_CELL = range(6)
+# Run scalars (float array): step size, quiescence clock, reference momentum, first bottoming (t, leg, cell), the
+# leg whose intermediate member struck the terrain.
+S_H, S_QUIET, S_MOMENTUM, S_BOT_T, S_BOT_LEG, S_BOT_CELL, S_STRUCK = range(7)
 
 MAX_STALL = 100     # accepted steps in a row that do not advance time before the run is declared failed
 GTOL = 1e-12       # m: a contact event function this close above zero counts as there
@@ -54,27 +55,28 @@ def slip_events(mu):
 
 
 @njit(cache=True)
-def _legs(geo, cells, mu, mem, contact, P, sliding, y, Pt, slt, dt, ft, Xt, mt, R):
-    """Footpad, slip state, static margin and reach deficit (mt) and forces of every leg on the ground at
-    state y; returns the cells' power."""
+def _legs(geo, cells, mu, mem, contact, P, sliding, shape, y, Pt, slt, dt, ft, Xt, mt, R):
+    """Footpad, slip state, forces and mt = (static margin, reach deficit, alpha, beta, psi) of every leg on the
+    ground at state y; returns the cells' power."""
     r, v, w = y[0:3], y[3:6], y[10:13]
     hold = slip_events(mu)
     power = 0.0
     for i in range(len(contact)):
         if contact[i]:
-            sl, pw, _, _, mt[i, 0], mt[i, 1] = footpad_force(geo, cells, i, mem[i], P[i], sliding[i], hold, mu[0],
-                                                             mu[1], r, R, v, w, Pt[i], dt[i], ft[i], Xt[i])
+            sl, pw, mt[i, 2], mt[i, 3], mt[i, 4], mt[i, 0], mt[i, 1] = footpad_force(
+                geo, cells, i, mem[i], shape[i], P[i], sliding[i], hold, mu[0], mu[1], r, R, v, w, Pt[i], dt[i], ft[i],
+                Xt[i])
             slt[i] = sl
             power += pw
     return power
 
 
 @njit(cache=True)
-def rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y, dy, Pt, slt, dt, ft, Xt, mt):
+def rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape, y, dy, Pt, slt, dt, ft, Xt, mt):
     """dy/dt: eq. 3-5 in terrain axes, Euler's equations 6-8 in principal axes, quaternion rate, leg work."""
     q = y[6:10] / np.sqrt(y[6] ** 2 + y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
     R = quat_matrix(q)
-    power = _legs(geo, cells, mu, mem, contact, P, sliding, y, Pt, slt, dt, ft, Xt, mt, R)
+    power = _legs(geo, cells, mu, mem, contact, P, sliding, shape, y, Pt, slt, dt, ft, Xt, mt, R)
     F0 = F1 = F2 = M0 = M1 = M2 = 0.0
     for i in range(len(contact)):
         if contact[i]:
@@ -93,9 +95,9 @@ def rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y, dy,
 
 
 @njit(cache=True)
-def _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y, dt, mt, g, raw):
+def _events(cells, geo, mu, mem, contact, sliding, shape, armed, y, dt, mt, g, raw):
     """Event functions g (2n); an event is a crossing of zero from above. g[i]: leg i's free footpad height
-    (in the air) or axial compression beyond the set less the reach deficit (on the ground, from the leg
+    (in the air) or main-cell compression beyond its set less the reach deficit (on the ground, from the leg
     state dt, mt already computed at y); an unarmed leg's threshold sits BAND past zero, so a footpad
     grazing the terrain stays put at zero force until it clearly leaves instead of switching every step.
     Not so for a footpad slid to the edge of its reach (deficit > 0): it still carries force, beyond the
@@ -107,9 +109,9 @@ def _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y, dt, mt, g, ra
     located = slip_events(mu)
     for i in range(n):
         if contact[i]:
-            g[i] = dt[i, 0] - axial_set(cells, i, mem[i]) - mt[i, 1]
+            g[i] = dt[i, 0] - main_set(cells, i, mem[i]) - mt[i, 1]
         else:
-            g[i] = free_footpad(geo, cells, i, mem[i], tilt[i], y[0:3], R)[2]
+            g[i] = free_footpad(geo, cells, i, mem[i], shape[i], y[0:3], R)[2]
         if not (raw or armed[i] or (contact[i] and mt[i, 1] > 0.0)):
             g[i] += BAND
         g[n + i] = mt[i, 0] if located and contact[i] and not sliding[i] else 1.0
@@ -128,7 +130,7 @@ def _first(g_prev, g):
 
 
 @njit(cache=True)
-def _stage(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y, h, K, y1, err, work, flight):
+def _stage(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape, y, h, K, y1, err, work, flight):
     """One Dormand-Prince step of size h from y with K[0] = f(y): y1, the error estimate, K[6] = f(y1); the
     work arrays are left holding the legs at y1 (the last stage is evaluated there). With `flight` (no leg
     on the ground, axisymmetric body) the step is the closed form of eq. 62-88, exact."""
@@ -137,7 +139,7 @@ def _stage(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y, 
         r, v, q, w = free_flight(y[0:3], y[3:6], y[6:10], y[10:13], inertia, gravity, h)
         y1[0:3], y1[3:6], y1[6:10], y1[10:13], y1[13] = r, v, q, w, y[13]
         err[:] = 0.0
-        rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y1, K[6], Pt, slt, dt, ft, Xt, mt)
+        rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape, y1, K[6], Pt, slt, dt, ft, Xt, mt)
         return
     yi = y1                                                     # stage state, overwritten below
     for s in range(1, 7):
@@ -146,7 +148,7 @@ def _stage(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y, 
             for j in range(s):
                 acc += h * A[s, j] * K[j, c]
             yi[c] = acc
-        rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, yi, K[s], Pt, slt, dt, ft, Xt, mt)
+        rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape, yi, K[s], Pt, slt, dt, ft, Xt, mt)
     for c in range(NY):
         acc, e = y[c], 0.0
         for j in range(7):
@@ -156,14 +158,14 @@ def _stage(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, y, 
 
 
 @njit(cache=True)
-def _commit(geo, cells, mu, mem, contact, P, sliding, tilt, armed, y, energy, last, work, g):
-    """Accept state y: arm legs clear of their last switch, move footpads, start slides where the static
+def _commit(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, energy, last, work, g):
+    """Accept state y: arm legs clear of their last switch, move footpads, keep the legs' shapes, start slides where the static
     margin is gone, add the step's work, update cell memory. energy (n, C): each cell's work (exact for the
     rate-free force, trapezoidal for the damper). last (n, 2C + 1): deflections, damper forces and a flag
     that they are set. Returns whether a slide started (the forces at y change)."""
     Pt, slt, dt, ft, Xt, mt = work
     cd, cf, cn, ck, cc, cy = cells
-    _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y, dt, mt, g, True)
+    _events(cells, geo, mu, mem, contact, sliding, shape, armed, y, dt, mt, g, True)
     C = mem.shape[1]
     started = False
     for i in range(len(contact)):
@@ -172,6 +174,7 @@ def _commit(geo, cells, mu, mem, contact, P, sliding, tilt, armed, y, energy, la
             continue
         known = last[i, 2 * C] > 0.0
         P[i] = Pt[i]
+        shape[i] = mt[i, 2:5]
         sliding[i] = slt[i]
         if not sliding[i] and mt[i, 0] < 0.0:                     # eq. 33: a held footpad past mu_S slides
             sliding[i], started = 1, True
@@ -191,30 +194,32 @@ def _commit(geo, cells, mu, mem, contact, P, sliding, tilt, armed, y, energy, la
 
 
 @njit(cache=True)
-def switch(geo, cells, mem, contact, P, sliding, tilt, armed, y, which, last, work):
-    """Touchdown (the footpad holds where it landed) or lift-off (the tilt is kept for recontact, eq. 13)."""
+def switch(geo, cells, mem, contact, P, sliding, shape, armed, y, which, last, work):
+    """Touchdown (the footpad holds where it landed) or lift-off (the shape is stored for recontact: eq. 13,
+    FORCE's ZETA)."""
     Pt, slt, dt, ft, Xt, mt = work
     R = quat_matrix(y[6:10])
     armed[which] = 0
     C = mem.shape[1]
     if contact[which]:
-        _, alpha, beta, _ = leg_force(geo, cells, which, mem[which], P[which], y[0:3], R, y[3:6], y[10:13],
-                                      dt[which], ft[which], Xt[which])
-        contact[which], tilt[which, 0], tilt[which, 1] = 0, alpha, beta
+        _, alpha, beta, psi = leg_force(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R, y[3:6],
+                                        y[10:13], dt[which], ft[which], Xt[which])
+        contact[which] = 0
+        shape[which, 0], shape[which, 1], shape[which, 2] = lift_shape(geo, which, alpha, beta, psi, y[0:3], R)
         last[which, 2 * C] = 0.0
     else:
-        pad = free_footpad(geo, cells, which, mem[which], tilt[which], y[0:3], R)
+        pad = free_footpad(geo, cells, which, mem[which], shape[which], y[0:3], R)
         P[which, 0], P[which, 1], P[which, 2] = pad[0], pad[1], 0.0
         contact[which], sliding[which] = 1, 1                   # (re)contact slides on mu_D (eq. 33)
-        leg_force(geo, cells, which, mem[which], P[which], y[0:3], R, y[3:6], y[10:13], dt[which], ft[which],
-                  Xt[which])
+        leg_force(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R, y[3:6], y[10:13], dt[which],
+                  ft[which], Xt[which])
         for j in range(C):
             last[which, j], last[which, C + j] = dt[which, j], 0.0
         last[which, 2 * C] = 1.0
 
 
 @njit(cache=True)
-def _monitor(geo, mass, inertia, gravity, bottoming, up, body, order, mem, contact, P, y, t, dt_step, ctl, run):
+def _monitor(geo, mass, inertia, gravity, bottoming, up, body, order, mem, contact, P, shape, y, t, dt_step, ctl, run):
     """Outcome checks after an accepted step; a status or -1."""
     R = quat_matrix(y[6:10])
     n = len(contact)
@@ -229,6 +234,10 @@ def _monitor(geo, mass, inertia, gravity, bottoming, up, body, order, mem, conta
     gn = np.sqrt(gravity[0] ** 2 + gravity[1] ** 2 + gravity[2] ** 2)
     if -(u0 * gravity[0] + u1 * gravity[1] + u2 * gravity[2]) / gn <= ctl[C_TIPCOS]:
         return TIPPED                                          # nutation past the critical angle (stmt 367)
+    struck = member_strike(geo, contact, shape, y[0:3], R)
+    if struck >= 0:
+        run[S_STRUCK] = struck
+        return MEMBER
     for b in range(body.shape[0]):
         if y[2] + R[2, 0] * body[b, 0] + R[2, 1] * body[b, 1] + R[2, 2] * body[b, 2] < ctl[C_CLEAR]:
             return BODY
@@ -263,7 +272,7 @@ def _hermite(y0, y1, f0, f1, h, theta, out):
 
 
 @njit(cache=True)
-def _guide(geo, cells, mu, mem, contact, P, sliding, tilt, armed, y, y1, f0, f1, h, j, g_prev, g1, tol, yt, gm, ga,
+def _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, y1, f0, f1, h, j, g_prev, g1, tol, yt, gm, ga,
            gb, work):
     """The earliest crossing on the step's Hermite interpolant, found by Illinois false position with one leg
     evaluation per point (no integration): (time estimate, slope of the crossing function there, its index)."""
@@ -280,8 +289,8 @@ def _guide(geo, cells, mu, mem, contact, P, sliding, tilt, armed, y, y1, f0, f1,
             m = 0.5 * (a + b)
         _hermite(y, y1, f0, f1, h, m / h, yt)
         q = yt[6:10] / np.sqrt(yt[6] ** 2 + yt[7] ** 2 + yt[8] ** 2 + yt[9] ** 2)
-        _legs(geo, cells, mu, mem, contact, P, sliding, yt, Pt, slt, dt, ft, Xt, mt, quat_matrix(q))
-        _events(cells, geo, mu, mem, contact, sliding, tilt, armed, yt, dt, mt, gm, False)
+        _legs(geo, cells, mu, mem, contact, P, sliding, shape, yt, Pt, slt, dt, ft, Xt, mt, quat_matrix(q))
+        _events(cells, geo, mu, mem, contact, sliding, shape, armed, yt, dt, mt, gm, False)
         k = _first(g_prev, gm)
         if k >= 0:
             if k != j:
@@ -315,7 +324,7 @@ def _copy_work(src, dst):
 
 
 @njit(cache=True)
-def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem, contact, P, sliding, tilt, armed,
+def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem, contact, P, sliding, shape, armed,
         energy, last, y, t, ctl, cnt, run_state, H_t, H_y, H_dy, H_d, H_f, H_X, H_P, H_c):
     """Advance the landing from (t, y) until t_final or a status; y, t and every memory array are updated in
     place. Returns (status, t)."""
@@ -324,15 +333,15 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
     y1, err = np.empty(NY), np.empty(NY)
     g_prev, g1, g_lo = np.empty(2 * n), np.empty(2 * n), np.empty(2 * n)
     work = (np.zeros((n, 3)), np.zeros(n, np.int64), np.zeros((n, n_cell)), np.zeros((n, n_cell)), np.zeros((n, 3)),
-            np.zeros((n, 2)))
+            np.zeros((n, 5)))
     Pt, slt, dt, ft, Xt, mt = work
     y_lo, yt = np.empty(NY), np.empty(NY)
     gm, ga, gb = np.empty(2 * n), np.empty(2 * n), np.empty(2 * n)
     work_lo = (Pt.copy(), slt.copy(), dt.copy(), ft.copy(), Xt.copy(), mt.copy())
-    args = (geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding)
+    args = (geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape)
     rhs(*args, y, K[0], *work)
     cnt[K_RHS] += 1
-    _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y, dt, mt, g_prev, False)
+    _events(cells, geo, mu, mem, contact, sliding, shape, armed, y, dt, mt, g_prev, False)
     fixed = ctl[C_FIXED] > 0.0
     h = ctl[C_FIXED] if fixed else run_state[S_H]
     t_final = ctl[C_TFINAL]
@@ -361,7 +370,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                 cnt[K_REJECTED] += 1
                 h *= max(0.2, 0.9 * e ** -0.2)
                 continue
-        _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y1, dt, mt, g1, False)
+        _events(cells, geo, mu, mem, contact, sliding, shape, armed, y1, dt, mt, g1, False)
         j = _first(g_prev, g1)
         if j >= 0:
             # The earliest event: located first on the step's Hermite interpolant (_guide), then by real trial
@@ -375,7 +384,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
             # reach sits at zero until it lifts off: no secant can place that crossing).
             cnt[K_EVENTS] += 1
             tol = ctl[C_EVENTTOL]
-            est, slope, j = _guide(geo, cells, mu, mem, contact, P, sliding, tilt, armed, y, y1, K[0], K[6], h, j,
+            est, slope, j = _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, y1, K[0], K[6], h, j,
                                    g_prev, g1, 0.1 * tol, yt, gm, ga, gb, work)
             lo, hi, side, mid, a_hi, newton = 0.0, h, 0, -1.0, g1[j], 0
             g_lo[:] = g_prev
@@ -394,7 +403,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                 _stage(*args, y, mid, K, y1, err, work, flight)
                 cnt[K_RHS] += 6
                 cnt[K_TRIALS] += 1
-                _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y1, dt, mt, g1, False)
+                _events(cells, geo, mu, mem, contact, sliding, shape, armed, y1, dt, mt, g1, False)
                 k = _first(g_prev, g1)
                 newton += 1
                 if k >= 0:
@@ -433,7 +442,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
         y[:] = y1
         y[6:10] /= np.sqrt(y[6] ** 2 + y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
         cnt[K_STEPS] += 1
-        changed = _commit(geo, cells, mu, mem, contact, P, sliding, tilt, armed, y, energy, last, work, g1)
+        changed = _commit(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, energy, last, work, g1)
         if forced >= n:
             sliding[forced - n], changed = 1, True
         k = cnt[K_HIST]                                # record as committed (a switching leg: before it)
@@ -452,21 +461,21 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
             K[0] = K[6]                               # first same as last: memory updates keep the force
         else:
             if 0 <= forced < n:
-                switch(geo, cells, mem, contact, P, sliding, tilt, armed, y, forced, last, work)
+                switch(geo, cells, mem, contact, P, sliding, shape, armed, y, forced, last, work)
             rhs(*args, y, K[0], *work)
             cnt[K_RHS] += 1
         H_dy[k] = K[0]
         cnt[K_HIST] = k + 1
-        _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y, dt, mt, g_prev, False)
+        _events(cells, geo, mu, mem, contact, sliding, shape, armed, y, dt, mt, g_prev, False)
         # A footpad that is out of reach from the start (a touchdown or slide start leaving it beyond the
         # friction cone at the edge of its reach) never crosses zero from above: it leaves now.
         for i in range(n):
             if contact[i] and mt[i, 1] > 0.0 and g_prev[i] <= 0.0:
-                switch(geo, cells, mem, contact, P, sliding, tilt, armed, y, i, last, work)
+                switch(geo, cells, mem, contact, P, sliding, shape, armed, y, i, last, work)
                 rhs(*args, y, K[0], *work)
                 cnt[K_RHS] += 1
                 H_dy[k] = K[0]
-                _events(cells, geo, mu, mem, contact, sliding, tilt, armed, y, dt, mt, g_prev, False)
+                _events(cells, geo, mu, mem, contact, sliding, shape, armed, y, dt, mt, g_prev, False)
         if fixed:
             h = ctl[C_FIXED]
         elif flight:
@@ -475,7 +484,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
             h = min(ctl[C_MAXSTEP], h * min(5.0, 0.9 * max(e, 1e-10) ** -0.2))
         if not flight:
             run_state[S_H] = h
-        status = _monitor(geo, mass, inertia, gravity, bottoming, up, body, order, mem, contact, P, y, t, h_acc,
+        status = _monitor(geo, mass, inertia, gravity, bottoming, up, body, order, mem, contact, P, shape, y, t, h_acc,
                           ctl, run_state)
         if status >= 0:
             return status, t

@@ -8,9 +8,8 @@ capsule at the footpad, is X = -AF1 u + F_alpha e_alpha + F_beta e_beta (eq. 25-
 the pads' generalized forces over the lever al, so that X . dd equals the cells' work exactly (energy
 closes). Cell rates come from the kinematics, not finite differences.
 
-`TelescopingLeg` describes a leg; `pack` turns a set of legs into the arrays the compiled functions take:
-geo = (attach (n,3), to_body (n,3,3), rho, pad_lever, pad angle cosines and sines (n,P,2), n_pads, small_angle) and
-cells = (deflections (n,C,K), forces (n,C,K), n_points (n,C), k, c, yield force or -1 (n,C)).
+`TelescopingLeg` describes a leg; `legs.pack` turns a set of legs into the arrays the compiled functions take
+(geo[2] is the length rho, geo[5] the number of pads).
 """
 
 from __future__ import annotations
@@ -50,29 +49,6 @@ class TelescopingLeg:
         return (self.axial, *self.pads)
 
 
-def pack(legs: tuple[TelescopingLeg, ...]):
-    """(geo, cells) arrays of a set of legs, cell curves padded to a common length."""
-    n = len(legs)
-    n_pad = max(len(leg.pads) for leg in legs)
-    n_cell = 1 + n_pad
-    n_pt = max(len(c.curve.deflection) for leg in legs for c in leg.cells)
-    angles = np.zeros((n, max(n_pad, 1), 2))
-    cd, cf = np.zeros((n, n_cell, n_pt)), np.zeros((n, n_cell, n_pt))
-    cn = np.zeros((n, n_cell), np.int64)
-    ck, cc, cy = np.ones((n, n_cell)), np.zeros((n, n_cell)), -np.ones((n, n_cell))
-    for i, leg in enumerate(legs):
-        angles[i, :len(leg.pads), 0] = np.cos(leg.pad_angles)
-        angles[i, :len(leg.pads), 1] = np.sin(leg.pad_angles)
-        for j, cell in enumerate(leg.cells):
-            d, f, k, c, y = cell.arrays
-            cd[i, j, :len(d)], cf[i, j, :len(d)], cn[i, j] = d, f, len(d)
-            ck[i, j], cc[i, j], cy[i, j] = k, c, y
-    geo = (np.array([leg.attach for leg in legs], float), np.array([leg.to_body for leg in legs], float),
-           np.array([leg.rho for leg in legs]), np.array([leg.pad_lever for leg in legs]), angles,
-           np.array([len(leg.pads) for leg in legs], np.int64), np.array([leg.small_angle for leg in legs], np.int64))
-    return geo, (cd, cf, cn, ck, cc, cy)
-
-
 @njit(cache=True)
 def leg_frame(alpha, beta):
     """Unit vectors u (attachment -> footpad), e_alpha, e_beta in leg axes (eq. 17-19), as tuples."""
@@ -94,7 +70,7 @@ def leg_force(geo, cells, i, mem, P, r, R, v, w, defl, frc, X):
     """Forces of leg i with its footpad held at P (terrain axes) under a capsule at r, attitude R (principal ->
     terrain), velocity v (terrain), rate w (principal). Writes the deflections, cell forces and the force X on
     the capsule (principal axes); returns (cells' power, alpha, beta, al)."""
-    attach, to_body, rho, pad_lever, angles, n_pads, small = geo
+    attach, to_body, rho, pad_lever, angles, n_pads, small = geo[0], geo[1], geo[2], geo[3], geo[4], geo[5], geo[6]
     a0, a1, a2 = attach[i, 0], attach[i, 1], attach[i, 2]
     L = to_body[i]
     b0, b1, b2 = mtv(R, P[0] - r[0], P[1] - r[1], P[2] - r[2])     # CG -> footpad, principal axes

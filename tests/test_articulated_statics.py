@@ -85,7 +85,7 @@ def test_envelopes_follow_the_scaling_laws():
     from sim.crush_curve import CrushCurve
     L, F = 1.825 / 4, 0.1                      # F arbitrary (the 300 lb capsule: mass ratio 0.1)
     case = CFG.cases[0]
-    g = replace(case.geometry, **{k: L * getattr(case.geometry, k) for k in LENGTHS}, PLD=F * case.geometry.PLD,
+    g = case.geometry._replace(**{k: L * getattr(case.geometry, k) for k in LENGTHS}, PLD=F * case.geometry.PLD,
                 SPRG=F / L * case.geometry.SPRG)
     scaled = replace(case, geometry=g,
                      upper=CrushCurve(tuple(L * d for d in case.upper.deflection), tuple(F * f for f in case.upper.force)),

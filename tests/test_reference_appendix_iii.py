@@ -133,14 +133,13 @@ def test_fig_10_parallelogram_alone_is_reachable_but_contradicts_the_tables():
     # from psi -15 to +30, past configuration 3's 0.97 ft plateau, so its cell would bottom (72,000 lbf)
     # before +30 deg, while Tables 14 and 15 print the same +30 deg loads (R11 48,759) as for a cell still
     # crushing at 36,000 lbf. Hence the shipped geometry follows the tables (docs/articulated-geometry.md).
-    from dataclasses import replace
     from scipy.optimize import least_squares
     from sim.articulated_cells import upper_deflection
     g0 = read_loads(LOADS).cases[0].geometry
     IN = 0.0254
 
     def geo(x):
-        return replace(g0, AA=x[0] * IN, AB=x[1] * IN, AG=x[2] * IN, AH=x[3] * IN, PHI=np.radians(x[4]))
+        return g0._replace(AA=x[0] * IN, AB=x[1] * IN, AG=x[2] * IN, AH=x[3] * IN, PHI=np.radians(x[4]))
 
     def par(g, p):
         return upper_lever(g, np.radians(p)) / np.cos(np.radians(p))
