@@ -28,8 +28,8 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-from .articulated_cells import lower_deflection, lower_lever, return_spring_force, upper_angle, upper_length
-from .articulated_kinematics import ArticulatedGeometry, _sin_psi, footpad, nearest_root, tip_radius
+from .articulated_cells import lower_deflection, lower_lever, return_spring_force, upper_length, upper_lever
+from .articulated_kinematics import ArticulatedGeometry, _sin_psi, footpad, nearest_root
 from .articulated_statics import ground_components
 from .crush_cell import CellModel
 from .telescoping_leg import cell_force
@@ -113,7 +113,7 @@ def leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, X):
     er = cb * e0 + sb * e1
     psi_dot = (er * c20 - c18 * e2) / det
     alpha_dot = (m11 * e2 - m21 * er) / det
-    lever1 = g.AU * np.sin(upper_angle(g, psi) - psi)               # d Delta_1 / d psi (eq. 45-46, 49)
+    lever1 = g.AU * upper_lever(g, psi)                             # d Delta_1 / d psi (eq. 45-46, 49)
     d1 = upper_length(g, psi) - art[i, N_ART - 1]
     f1 = cell_force(cells, i, 0, mem, d1, lever1 * psi_dot)
     lever2 = lower_lever(g, alpha)                                  # d Delta_2 / d alpha (eq. 47-48, FP4)

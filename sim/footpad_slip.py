@@ -19,9 +19,10 @@ The report bracketed the crossing but lost runs when the crossing moved near lif
 the search always brackets: the footpad moves from the held position with growing steps until
 FE12 <= mu_D FE3 or it leaves the leg's reach (the main cell, telescoping axial or articulated upper, short of
 its permanent set, or no articulated root: the leg would have lifted off; every direction in the plane leaves
-the reach within two leg lengths), where it counts as infeasible. Bisection while one end is out of reach, then false position with
-the Illinois modification, closes on the crossing; the answer is always a contact point within reach on the
-friction-feasible side, or the edge of the reach (the lift-off event then takes over).
+the reach within two leg lengths), where it counts as infeasible. Bisection while one end is out of reach,
+then false position with the Illinois modification, closes on the crossing; the answer is always a contact
+point within reach on the friction-feasible side, or the edge of the reach (the lift-off event then takes
+over).
 """
 
 from __future__ import annotations

@@ -136,7 +136,7 @@ class _Run:
         self.energy = np.zeros((n, C))
         self.last = np.zeros((n, 2 * C + 1))
         self.work = (np.zeros((n, 3)), np.zeros(n, np.int64), np.zeros((n, C)), np.zeros((n, C)), np.zeros((n, 3)),
-                     np.zeros((n, 5)))
+                     np.zeros((n, lk.N_MT)))
         self.cnt = np.zeros(6, np.int64)
         self.run_state = np.array([ctl.first_step, 0.0, 0.0, -1.0, -1.0, -1.0, -1.0])
         self.ctl_arr = np.array([ctl.t_final, ctl.rtol, ctl.atol, ctl.fixed_step or 0.0, ctl.max_step, ctl.event_tol,
@@ -189,8 +189,8 @@ class _Run:
         s = self.scene
         while True:
             status, t = lk.run(self.geo, self.cells, s.mass, s.inertia, s.gravity, self.mu, self.bottoming, s.up,
-                               s.body_points, self.order, self.mem, self.contact, self.P, self.sliding, self.shape, self.armed,
-                               self.energy, self.last, y, t, self.ctl_arr, self.cnt, self.run_state, self.H_t,
+                               s.body_points, self.order, self.mem, self.contact, self.P, self.sliding, self.shape,
+                               self.armed, self.energy, self.last, y, t, self.ctl_arr, self.cnt, self.run_state, self.H_t,
                                self.H_y, self.H_dy, self.H_d, self.H_f, self.H_X, self.H_P, self.H_c)
             if status == lk.BUFFER:
                 self._grow(2 * len(self.H_t))

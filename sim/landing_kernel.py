@@ -38,6 +38,8 @@ C_TFINAL, C_RTOL, C_ATOL, C_FIXED, C_MAXSTEP, C_EVENTTOL, C_STOPBOTTOM, C_TIPCOS
     C_QUIET_FRAC, C_TAUS, C_PERIOD, C_ENERGY_T = range(14)
 # Counters (int array).
 K_STEPS, K_REJECTED, K_RHS, K_HIST, K_EVENTS, K_TRIALS = range(6)
+# Leg state columns of the work array mt: static margin, reach deficit, alpha, beta, psi.
+N_MT = 5
 # Run scalars (float array): step size, quiescence clock, reference momentum, first bottoming (t, leg, cell), the
 # leg whose intermediate member struck the terrain.
 S_H, S_QUIET, S_MOMENTUM, S_BOT_T, S_BOT_LEG, S_BOT_CELL, S_STRUCK = range(7)
@@ -159,9 +161,9 @@ def _stage(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, sha
 
 @njit(cache=True)
 def _commit(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, energy, last, work, g):
-    """Accept state y: arm legs clear of their last switch, move footpads, keep the legs' shapes, start slides where the static
-    margin is gone, add the step's work, update cell memory. energy (n, C): each cell's work (exact for the
-    rate-free force, trapezoidal for the damper). last (n, 2C + 1): deflections, damper forces and a flag
+    """Accept state y: arm legs clear of their last switch, move footpads, keep the legs' shapes, start slides
+    where the static margin is gone, add the step's work, update cell memory. energy (n, C): each cell's work
+    (exact for the rate-free force, trapezoidal for the damper). last (n, 2C + 1): deflections, damper forces and a flag
     that they are set. Returns whether a slide started (the forces at y change)."""
     Pt, slt, dt, ft, Xt, mt = work
     cd, cf, cn, ck, cc, cy = cells
@@ -333,7 +335,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
     y1, err = np.empty(NY), np.empty(NY)
     g_prev, g1, g_lo = np.empty(2 * n), np.empty(2 * n), np.empty(2 * n)
     work = (np.zeros((n, 3)), np.zeros(n, np.int64), np.zeros((n, n_cell)), np.zeros((n, n_cell)), np.zeros((n, 3)),
-            np.zeros((n, 5)))
+            np.zeros((n, N_MT)))
     Pt, slt, dt, ft, Xt, mt = work
     y_lo, yt = np.empty(NY), np.empty(NY)
     gm, ga, gb = np.empty(2 * n), np.empty(2 * n), np.empty(2 * n)

@@ -136,12 +136,16 @@ def test_tables_3_and_4():
 
 def test_walking_down_a_35_degree_slope_for_5_seconds():
     """Configuration 5 down a 35 deg slope with mu_D 0.5 < tan 35 deg: the capsule slides and walks downhill
-    for the full 5 s with its footpads slipping, without failing and with closure below 1e-4."""
+    for the full 5 s with its footpads slipping, without failing and with closure below 1e-4. Friction takes
+    the share of the released potential energy a sliding block gives up, mu_D cot(gamma) = 0.714, within
+    15 % (measured 0.656: the legs hop, so the normal load is at times below m g cos(gamma), and the cells
+    take 5 % of the energy)."""
     cfg = read_scene(EX / "scenes" / "articulated_config5.toml",
                      {"terrain.slope": "35 deg", "terrain.mu_static": 0.6, "terrain.mu_dynamic": 0.5,
                       "initial.velocity": ["0 ft/s", "5 ft/s", "-10 ft/s"], "initial.roll": "0 deg"})
     res = simulate(cfg.scene, cfg.controls)
     assert outcome(cfg, res)[0] == "walking"
     assert res.t[-1] == pytest.approx(5.0)
-    assert res.energy["friction_J"] > 0.5 * res.energy["potential_change_J"]
+    share = res.energy["friction_J"] / res.energy["potential_change_J"]
+    assert share == pytest.approx(0.5 / np.tan(np.radians(35.0)), rel=0.15)
     assert res.energy["closure_rel"] < 1e-4
