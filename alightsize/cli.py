@@ -1,4 +1,4 @@
-"""Command line: `alightsize design | audit | loads | simulate | scale | reports` (see CONTRACTS.md). Exit 0 ok, 1 check failed,
+"""Command line: `alightsize design | audit | loads | simulate | sweep | bench | scale | reports` (see CONTRACTS.md). Exit 0 ok, 1 check failed,
 2 bad input, 3 internal error."""
 
 from __future__ import annotations
@@ -6,6 +6,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import os
 import sys
 import traceback
 from pathlib import Path
@@ -17,7 +18,7 @@ from .errors import InputError
 def _design(args) -> int:
     from .design import run_design, write_design
     from .design_config import read_design
-    res = run_design(read_design(args.config))
+    res = run_design(read_design(args.config, Path(args.out) / "landings"))
     files = write_design(res, Path(args.out))
     failed = [r for r in res.records if not r.ok]
     print(f"{res.config.configuration}: {len(res.records)} checks, {len(failed)} below the required design factor; "
@@ -73,6 +74,33 @@ def _simulate(args) -> int:
     return 1 if (args.require_success and s["outcome"] == "failed") else 0
 
 
+def _sweep(args) -> int:
+    from .study import read_study
+    from .sweep import run_sweep
+    from .sweep_report import write_results
+    study = read_study(args.study)
+    out = Path(args.out)
+    backend = "serial" if args.serial else "dask" if (args.scheduler or args.dask_local) else "pool"
+    workers = args.dask_local or args.workers
+    if workers is not None and workers < 1:
+        raise InputError("(command line)", "--workers/--dask-local", "a worker count >= 1", str(workers))
+    print(f"{study.name}: {len(study.runs)} runs -> {out / 'runs.sqlite'} ({backend}"
+          f"{'' if backend == 'serial' else f', {workers or os.cpu_count()} workers' if not args.scheduler else f' at {args.scheduler}'})",
+          flush=True)
+    try:
+        stats = run_sweep(study, out, backend, workers, args.scheduler, quiet=args.quiet)
+    except KeyboardInterrupt:
+        print(f"alightsize: interrupted; every finished run is stored in {out / 'runs.sqlite'}: "
+              "run the same command again to finish", file=sys.stderr)
+        return 130
+    files = write_results(study, out)
+    print(f"{stats.computed} run(s) computed in {stats.wall_s:.1f} s, {stats.skipped} already done, "
+          f"{stats.failed} failed")
+    print("wrote " + ", ".join(str(f) for f in files))
+    failed = json.loads((out / "outcomes.json").read_text())["failed"]
+    return 1 if (args.require_success and failed) else 0
+
+
 def _bench(args) -> int:
     from .bench import run_bench, write_bench
     data = run_bench(quick=args.quick, progress=lambda msg: print(msg, flush=True))
@@ -108,6 +136,10 @@ def _reports(args) -> int:
         res = run_design(read_design(cfg))
         write_design(res, Path(args.out) / cfg.stem)
         print(f"{cfg.stem}: {'every check passes' if res.ok else 'some checks below the required factor (reported)'}")
+    if (Path(args.examples) / "drops").is_dir():
+        from .drop_report import write_drop_report
+        write_drop_report(Path(args.out) / "drops", Path(args.examples) / "drops")
+        print("drops: simulated drop tests beside Tables 6-13 (drops.html, drops.md, drops.json)")
     return 0
 
 
@@ -134,6 +166,16 @@ def parser() -> argparse.ArgumentParser:
     si.add_argument("--out", required=True, help="output folder")
     si.add_argument("--require-success", action="store_true", help="exit 1 when the landing fails numerically")
     si.set_defaults(run=_simulate)
+    sw = sub.add_parser("sweep", help="a parametric or Monte Carlo study of landings (resumable run store)")
+    sw.add_argument("study")
+    sw.add_argument("--out", required=True, help="output folder (runs.sqlite is kept there and resumed)")
+    sw.add_argument("--workers", type=int, help="local process pool size (default: all cores)")
+    sw.add_argument("--serial", action="store_true", help="run in this process, one landing at a time")
+    sw.add_argument("--scheduler", help="address of a Dask distributed scheduler to run on")
+    sw.add_argument("--dask-local", type=int, metavar="N", help="start a local Dask cluster of N workers")
+    sw.add_argument("--quiet", action="store_true", help="no progress bar")
+    sw.add_argument("--require-success", action="store_true", help="exit 1 when a run failed")
+    sw.set_defaults(run=_sweep)
     b = sub.add_parser("bench", help="landing simulator speed against error, with the solve_ivp-style baseline")
     b.add_argument("--out", required=True, help="output folder")
     b.add_argument("--quick", action="store_true", help="fewer scenes and settings")

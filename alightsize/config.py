@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 import tomllib
 from pathlib import Path
 from typing import Any
@@ -11,6 +12,7 @@ from . import units
 from .errors import InputError
 
 _MISSING = object()
+_INDEXED = re.compile(r"(\w+)\[(\d+)\]")
 
 
 def _describe(value: Any) -> str:
@@ -33,14 +35,24 @@ class Node:
         return f"{self.path}.{name}" if self.path else name
 
     def set_path(self, dotted: str, value: Any) -> None:
-        """Set the value at a dotted key path below this table (creating tables on the way)."""
+        """Set the value at a dotted key path below this table (creating tables on the way); a last key
+        with an index, `initial.velocity[2]`, sets that element of an existing array."""
         *tables, last = dotted.split(".")
         data = self.data
         for k, name in enumerate(tables):
             data = data.setdefault(name, {})
             if not isinstance(data, dict):
                 raise self.error(".".join(tables[:k + 1]), "a table to set " + dotted + " in", _describe(data))
-        data[last] = value
+        m = _INDEXED.fullmatch(last)
+        if m is None:
+            data[last] = value
+            return
+        name, index = m.group(1), int(m.group(2))
+        array = data.get(name)
+        if not isinstance(array, list) or index >= len(array):
+            where = ".".join(tables + [name])
+            raise self.error(where, f"an array with an element [{index}] to set", _describe(array))
+        data[name] = array[:index] + [value] + array[index + 1:]
 
     def error(self, name: str, expected: str, found: str) -> InputError:
         return InputError(self.file, self.key(name), expected, found)

@@ -286,8 +286,11 @@ def read_scene(path: str | Path, overrides: dict[str, object] | None = None) -> 
     lepk = rot(0, slope)                                # kappa -> epsilon (eq. 1, LEPK): gravity (0, g sin, -g cos) (eq. 4-5)
 
     ini = root.table("initial")
-    ini.allow(("velocity", "roll", "yaw", "pitch", "inclination", "inclination_azimuth", "rates", "note"))
+    ini.allow(("velocity", "heading", "roll", "yaw", "pitch", "inclination", "inclination_azimuth", "rates", "note"))
     vel = _vector(ini, "velocity", "velocity")
+    if ini.has("heading"):                              # the horizontal velocity turned from kappa-2 toward kappa-1
+        h, v_h = ini.quantity("heading", "angle", positive=False), float(np.hypot(vel[0], vel[1]))
+        vel = np.array([v_h * np.sin(h), v_h * np.cos(h), vel[2]])
     roll = ini.quantity("roll", "angle", 0.0, positive=False) if ini.has("roll") else 0.0
     if ini.has("inclination"):
         if ini.has("yaw") or ini.has("pitch"):

@@ -1,38 +1,53 @@
-"""Studies: a run table over base scenes, run one landing at a time (the plain loop issue 4 asks for until
-the sweep runner exists), outcomes compared run by run with the report's printed ones.
+"""Study configs for `alightsize sweep`: base scenes, then runs from a CSV run table, a grid over scene keys
+and/or Monte Carlo dispersions, with study criteria and the layout of the outcome matrix.
 
-A study TOML names its base scenes and a CSV run table; each row picks a scene and sets scene keys from
-its columns (templates "{column} unit"), optionally through a choice table (a column value -> a set of
-keys). `python -m alightsize.study STUDY.toml --out DIR` writes outcomes.json (alightsize.study/1),
-comparison.csv and comparison.md.
+```
+[study]        name, title, seed (Monte Carlo), samples (per table row / grid point), history (bool)
+[scenes]       KEY = "scene.toml" (relative to the study)
+[runs]         table = "runs.csv", id, scene, set = {scene key = "{column} unit"}, choose.COLUMN = {...}
+[grid]         scene = [KEYS], "scene.key" = [values] ...   (cartesian product, declared order)
+[dispersions]  "scene.key" = {dist = "normal"|"uniform"|"truncated_normal", ...}   (alightsize.dispersions)
+[criteria]     preset = "human"|"instrument", max_xdd_g, max_onset_g_s, no_bottoming, ...
+[compare]      column = "outcome_class"   (the run table's printed class, compared run by run)
+[matrix]       rows = [parameters], columns = parameter (the layout of Tables 1-4), plot = [x, y]
+```
+Scene keys may index an array element: "initial.velocity[1]". A run is fully described by its scene and
+overrides; its inputs hash (`scene_hash`) covers the merged scene TOML, the overrides and the version.
 """
 
 from __future__ import annotations
 
-import argparse
+import copy
 import csv
-import io
+import hashlib
+import itertools
 import json
-import sys
-import time
+import string
 from dataclasses import dataclass
 from pathlib import Path
 
-from .atomic import write_atomic
+import numpy as np
+
+from . import __version__
 from .config import Node, load_toml
+from .dispersions import Dispersion, read_dispersion
 from .errors import InputError
-from .landing_output import outcome, summary
-from .scene_config import SceneConfig, read_scene
+from .landing_criteria import Criteria, read_criteria
+from .landing_output import outcome
+from .scene_config import SceneConfig, load_scene_toml, read_scene
+from .units import registry
 
 BOTTOMED_KIND = {"axial": "axial", "rot": "rotational_pad", "upper": "psi", "lower": "alpha"}
+MAX_RUNS = 1_000_000
 
 
 @dataclass(frozen=True)
 class Run:
     run_id: str
+    scene_key: str
     scene: Path
     overrides: dict
-    params: dict
+    params: dict               # what the user reads: table columns, grid values, samples (as written)
     reference: str | None
 
 
@@ -42,6 +57,12 @@ class Study:
     name: str
     title: str
     runs: tuple[Run, ...]
+    criteria: Criteria | None
+    matrix_rows: tuple[str, ...]
+    matrix_column: str
+    history: bool
+    seed: int | None
+    plot_params: tuple[str, ...]   # candidates for the boundary plot's axes, in order
 
 
 def _fill(template, row: dict, node: Node, key: str):
@@ -56,22 +77,15 @@ def _fill(template, row: dict, node: Node, key: str):
         raise node.error(key, "a template naming columns of the run table", f"{template!r} ({exc})") from None
 
 
-def read_study(path: str | Path) -> Study:
-    """Read a study; problems are InputErrors naming the file and key path."""
-    path = Path(path)
-    root = load_toml(path)
-    root.allow(("study", "scenes", "runs", "compare"))
-    head = root.table("study")
-    head.allow(("name", "title"))
-    name, title = head.string("name", path.stem), head.string("title", path.stem)
-    head.finish()
-    scenes_node = root.table("scenes")
-    scenes = {k: path.parent / str(v) for k, v in scenes_node.data.items()}
-    for k, f in scenes.items():
-        if not f.is_file():
-            raise scenes_node.error(k, "the path of a scene TOML (relative to the study)", f"{str(f)!r}: no such file")
-    scenes_node.allow(tuple(scenes))
-    runs_node = root.table("runs")
+def _template_columns(value) -> list[str]:
+    """The run-table columns a [runs.set] template names, in order."""
+    if isinstance(value, list):
+        return [c for v in value for c in _template_columns(v)]
+    return [f for _, f, _, _ in string.Formatter().parse(value) if f] if isinstance(value, str) else []
+
+
+def _table_points(path: Path, runs_node: Node, scenes: dict, compare: Node | None) -> list[tuple]:
+    """(id, scene key, overrides, params, reference) per row of the CSV run table."""
     runs_node.allow(("table", "id", "scene", "set", "choose"))
     table = path.parent / runs_node.string("table")
     if not table.is_file():
@@ -79,13 +93,10 @@ def read_study(path: str | Path) -> Study:
     id_col, scene_col = runs_node.string("id", "run"), runs_node.string("scene", "scene")
     setters = runs_node.table("set", optional=True)
     choose = runs_node.table("choose", optional=True)
-    compare = root.table("compare", optional=True)
     ref_col = compare.string("column") if compare else None
-    if compare:
-        compare.finish()
     with open(table, newline="", encoding="utf-8") as fh:
         rows = list(csv.DictReader(fh))
-    runs = []
+    points = []
     for n, row in enumerate(rows, start=2):
         where = f"{table.name} line {n}"
         for col in (id_col, scene_col) + ((ref_col,) if ref_col else ()):
@@ -98,8 +109,173 @@ def read_study(path: str | Path) -> Study:
             if row.get(col) not in options:
                 raise InputError(str(table), f"{where}, {col}", f"one of {sorted(options)}", repr(row.get(col)))
             over.update(options[row[col]])
-        runs.append(Run(row[id_col], scenes[row[scene_col]], over, row, row[ref_col] if ref_col else None))
-    return Study(path, name, title, tuple(runs))
+        points.append((row[id_col], row[scene_col], over, dict(row), row[ref_col] if ref_col else None))
+    return points
+
+
+def _grid_points(grid: Node, scenes: dict) -> list[tuple]:
+    """The cartesian product of the grid's values (declared order, scenes outermost)."""
+    keys = [k for k in grid.data if k != "scene"]
+    chosen = [str(s) for s in grid.raw("scene", list(scenes))]
+    for s in chosen:
+        if s not in scenes:
+            raise grid.error("scene", f"keys of [scenes] ({', '.join(sorted(scenes))})", repr(s))
+    axes = []
+    for k in keys:
+        values = grid.raw(k)
+        if not isinstance(values, list) or not values:
+            raise grid.error(k, "a non-empty array of values for this scene key", repr(values))
+        axes.append(values)
+    grid.finish()
+    combos = list(itertools.product(chosen, *axes))
+    width = len(str(len(combos)))
+    return [(f"{c[0]}-{n + 1:0{width}d}", c[0], dict(zip(keys, c[1:])), {"scene": c[0], **dict(zip(keys, c[1:]))},
+             None) for n, c in enumerate(combos)]
+
+
+def _cell_shape(scene: Path) -> tuple[int, int]:
+    cfg = read_scene(scene)
+    return len(cfg.cell_names), len(cfg.cell_names[0])
+
+
+def _sampled(points: list[tuple], dispersions: list[Dispersion], samples: int, seed: int, scenes: dict) -> list[tuple]:
+    """Each point times `samples` Monte Carlo draws; sample k uses default_rng([seed, k]) at every point."""
+    shapes = {}
+    out = []
+    width = len(str(samples - 1))
+    for pid, skey, over, params, ref in points:
+        for k in range(samples):
+            rng = np.random.default_rng([seed, k])
+            drawn = {}
+            for d in dispersions:
+                if d.per_cell and skey not in shapes:
+                    shapes[skey] = _cell_shape(scenes[skey])
+                drawn[d.key] = d.value(rng, shapes.get(skey))
+            run_id = f"{pid}-{k:0{width}d}" if pid else f"{k:0{width}d}"
+            out.append((run_id, skey, {**over, **drawn}, {**params, **drawn, "sample": k}, ref))
+    return out
+
+
+def read_study(path: str | Path) -> Study:
+    """Read a study; problems are InputErrors naming the file and key path."""
+    path = Path(path)
+    root = load_toml(path)
+    root.allow(("study", "scenes", "runs", "grid", "dispersions", "criteria", "compare", "matrix"))
+    head = root.table("study")
+    head.allow(("name", "title", "seed", "samples", "history", "note"))
+    name, title = head.string("name", path.stem), head.string("title", path.stem)
+    history = head.boolean("history", False)
+    head.string("note", "")
+    scenes_node = root.table("scenes")
+    scenes = {str(k): path.parent / str(v) for k, v in scenes_node.data.items()}
+    for k, f in scenes.items():
+        if not f.is_file():
+            raise scenes_node.error(k, "the path of a scene TOML (relative to the study)", f"{str(f)!r}: no such file")
+    scenes_node.allow(tuple(scenes))
+    runs_node, grid = root.table("runs", optional=True), root.table("grid", optional=True)
+    if runs_node and grid:
+        raise root.error("grid", "either a run table [runs] or a [grid]", "both")
+    compare = root.table("compare", optional=True)
+    if runs_node:
+        points = _table_points(path, runs_node, scenes, compare)
+    elif grid:
+        points = _grid_points(grid, scenes)
+    else:
+        points = [("" if len(scenes) == 1 else k, k, {}, {"scene": k}, None) for k in scenes]
+    if compare:
+        compare.finish()
+    disp_node = root.table("dispersions", optional=True)
+    dispersions = [read_dispersion(disp_node, k) for k in disp_node.data] if disp_node else []
+    seed = head.integer("seed", None, minimum=0) if dispersions else None
+    if dispersions and seed is None:
+        raise head.error("seed", "an integer seed for the Monte Carlo dispersions", "nothing")
+    if dispersions and not head.has("samples"):
+        raise head.error("samples", "the number of Monte Carlo samples (an integer >= 1)", "nothing")
+    samples = head.integer("samples", 1)
+    if len(points) * samples > MAX_RUNS:
+        raise head.error("samples", f"at most {MAX_RUNS:,} runs in all", f"{len(points) * samples:,}")
+    head.finish()
+    if dispersions:
+        points = _sampled(points, dispersions, samples, seed, scenes)
+    ids = [p[0] for p in points]
+    if len(set(ids)) != len(ids):
+        dup = next(i for i in ids if ids.count(i) > 1)
+        raise root.error("runs.id", "a unique run id per run", f"{dup!r} more than once")
+    runs = tuple(Run(pid, skey, scenes[skey], over, params, ref) for pid, skey, over, params, ref in points)
+    criteria = read_criteria(root.table("criteria", optional=True))
+    mat = root.table("matrix", optional=True)
+    default_col = "scene" if len(scenes) > 1 else (list(points[0][3])[-1] if points[0][3] else "scene")
+    column = mat.string("columns", default_col) if mat else default_col
+    rows = tuple(mat.strings("rows")) if mat and mat.has("rows") else tuple(
+        k for k in points[0][3] if k not in (column, "sample") and k not in (d.key for d in dispersions))
+    if runs_node:
+        candidates = [c for v in (runs_node.data.get("set") or {}).values() for c in _template_columns(v)]
+    else:
+        candidates = list(grid.data if grid else ()) + [d.key for d in dispersions if not d.per_cell]
+    plot = tuple(mat.strings("plot")) if mat and mat.has("plot") else tuple(dict.fromkeys(candidates))
+    if mat and mat.has("plot") and len(plot) != 2:
+        raise mat.error("plot", "two parameter names (x, y) for the boundary plot", repr(list(plot)))
+    if mat:
+        mat.finish()
+    root.finish()
+    return Study(path, name, title, runs, criteria, rows, column, history, seed, plot)
+
+
+def scene_hash(run: Run) -> str:
+    """SHA-256 of the run's inputs: the merged scene TOML with the overrides applied, and the version."""
+    root = load_scene_toml(run.scene)
+    data = copy.deepcopy(root.data)
+    node = type(root)(root.file, "", data)
+    for k, v in run.overrides.items():
+        node.set_path(k, v)
+    text = json.dumps({"scene": data, "version": __version__}, sort_keys=True, default=str)
+    return hashlib.sha256(text.encode()).hexdigest()
+
+
+_SUFFIX = {(0, 1, 0): ("m", "m"), (0, 1, -1): ("m_s", "m/s"), (0, 0, -1): ("rad_s", "rad/s"),
+           (1, 1, -2): ("N", "N"), (1, 0, 0): ("kg", "kg"), (0, 0, 1): ("s", "s"), (0, 1, -2): ("m_s2", "m/s^2"),
+           (1, 2, -2): ("J", "J")}
+
+
+def _si(value) -> tuple[str, float | str]:
+    """(unit suffix, value): quantities in SI (angles in deg, the contract's _deg), numbers as they are,
+    other text as text."""
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return "", float(value)
+    try:
+        q = registry().Quantity(str(value))
+    except Exception:                                  # noqa: BLE001 - not a quantity: keep the text
+        return "", str(value)
+    if not hasattr(q, "dimensionality"):
+        return "", float(q)
+    if q.dimensionless:
+        return ("deg", float(q.to("deg").magnitude)) if str(q.units) != "dimensionless" else ("", float(q.magnitude))
+    d = q.dimensionality
+    dims = (int(d.get("[mass]", 0)), int(d.get("[length]", 0)), int(d.get("[time]", 0)))
+    if dims in _SUFFIX:
+        return _SUFFIX[dims][0], float(q.to(_SUFFIX[dims][1]).magnitude)
+    return "", str(value)
+
+
+def parameter_columns(overrides: dict) -> dict:
+    """Scene overrides as SQL columns named by key path and SI unit ("terrain.slope" -> terrain_slope_deg);
+    arrays become one column per element."""
+    out = {}
+
+    def put(name: str, value) -> None:
+        if isinstance(value, list):
+            for i, v in enumerate(value):
+                put(f"{name}_{i}", v)
+            return
+        if isinstance(value, dict):
+            out[name] = json.dumps(value, sort_keys=True)
+            return
+        suffix, v = _si(value)
+        out[f"{name}_{suffix}" if suffix else name] = v
+
+    for key, value in overrides.items():
+        put(key.replace(".", "_").replace("[", "_").replace("]", ""), value)
+    return out
 
 
 def outcome_class(cfg: SceneConfig, res) -> str:
@@ -110,78 +286,3 @@ def outcome_class(cfg: SceneConfig, res) -> str:
         return out
     cell = cfg.cell_names[res.bottomed[1]][res.bottomed[2]]
     return "bottomed_" + next(v for k, v in BOTTOMED_KIND.items() if cell.startswith(k))
-
-
-def run_study(study: Study, progress=None) -> list[dict]:
-    """Every run of the study, one after the other: outcome, class, the report's class, key figures."""
-    from sim.landing import simulate
-    rows = []
-    t0 = time.perf_counter()
-    for k, run in enumerate(study.runs):
-        try:
-            cfg = read_scene(run.scene, run.overrides)
-        except InputError as exc:                      # a value the run table put into the scene
-            raise InputError(exc.file, f"{exc.key} (run {run.run_id} of {study.path.name})", exc.expected,
-                             exc.found) from None
-        res = simulate(cfg.scene, cfg.controls)
-        s = summary(cfg, res)
-        cls = outcome_class(cfg, res)
-        rows.append({"run_id": run.run_id, "scene": cfg.name, "params": run.params, "outcome": s["outcome"],
-                     "outcome_class": cls, "reference_class": run.reference,
-                     "agrees": None if run.reference is None else cls == run.reference, "reason": s["reason"],
-                     "t_end_s": s["t_end_s"], "peak_xdd_g": s["peak"]["xdd_g"],
-                     "closure_rel": s["energy"]["closure_rel"], "wall_s": res.wall_s})
-        if progress:
-            el = time.perf_counter() - t0
-            eta = el / (k + 1) * (len(study.runs) - k - 1)
-            progress(f"[{k + 1}/{len(study.runs)}] {run.run_id}: {cls} (report: {run.reference}) "
-                     f"{res.wall_s * 1e3:.0f} ms; elapsed {el:.1f} s, eta {eta:.0f} s")
-    return rows
-
-
-def write_study(study: Study, rows: list[dict], out: Path) -> list[Path]:
-    """outcomes.json, comparison.csv and comparison.md (written atomically)."""
-    out.mkdir(parents=True, exist_ok=True)
-    compared = [r for r in rows if r["agrees"] is not None]
-    agree = sum(r["agrees"] for r in compared)
-    doc = {"schema": "alightsize.study/1", "study": study.name, "title": study.title, "runs": rows,
-           "agreement": {"compared": len(compared), "agree": agree,
-                         "fraction": agree / len(compared) if compared else None},
-           "failed": [r["run_id"] for r in rows if r["outcome"] == "failed"]}
-    files = [out / "outcomes.json", out / "comparison.csv", out / "comparison.md"]
-    write_atomic(files[0], json.dumps(doc, indent=1) + "\n")
-    buf = io.StringIO()
-    w = csv.writer(buf)
-    w.writerow(["run", "scene", "outcome_class", "reference_class", "agrees", "t_end_s", "peak_xdd3_g",
-                "closure_rel", "reason"])
-    for r in rows:
-        w.writerow([r["run_id"], r["scene"], r["outcome_class"], r["reference_class"], r["agrees"],
-                    f"{r['t_end_s']:.4f}", f"{r['peak_xdd_g'][2]:.2f}", f"{r['closure_rel']:.1e}", r["reason"]])
-    write_atomic(files[1], buf.getvalue())
-    lines = [f"# {study.title}", "", f"Agreement with the printed outcome classes: {agree} of {len(compared)}"
-             + (f" ({100 * agree / len(compared):.0f} %)" if compared else ""), "",
-             "| run | simulated | report | agrees | end (s) | peak XDD(3) (g) |", "|---|---|---|---|---|---|"]
-    lines += [f"| {r['run_id']} | {r['outcome_class']} | {r['reference_class']} | {'yes' if r['agrees'] else 'NO'} | "
-              f"{r['t_end_s']:.3f} | {r['peak_xdd_g'][2]:.1f} |" for r in rows]
-    write_atomic(files[2], "\n".join(lines) + "\n")
-    return files
-
-
-def main(argv: list[str] | None = None) -> int:
-    ap = argparse.ArgumentParser(prog="python -m alightsize.study", description=__doc__.splitlines()[0])
-    ap.add_argument("study")
-    ap.add_argument("--out", required=True)
-    a = ap.parse_args(argv)
-    try:
-        study = read_study(a.study)
-        rows = run_study(study, progress=lambda m: print(m, flush=True))
-    except InputError as exc:
-        print(f"alightsize: {exc}", file=sys.stderr)
-        return 2
-    files = write_study(study, rows, Path(a.out))
-    print("wrote " + ", ".join(str(f) for f in files))
-    return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())

@@ -1,0 +1,227 @@
+"""Sweep runner (issue 6): study configs, Monte Carlo draws, the run store, backends, resumption."""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import sqlite3
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from alightsize.cli import main
+from alightsize.config import Node
+from alightsize.dispersions import read_dispersion
+from alightsize.errors import InputError
+from alightsize.run_store import TIMING
+from alightsize.study import read_study
+from alightsize.sweep import run_sweep
+from alightsize.sweep_report import wilson, write_results
+
+ROOT = Path(__file__).resolve().parent.parent
+SCENE = ROOT / "examples" / "affdl-tr-66-33" / "scenes" / "telescoping_config2.toml"
+
+
+def _study(tmp_path: Path, samples: int = 12, extra: str = "") -> Path:
+    """A small Monte Carlo study about telescoping configuration 2 (about 50 ms per landing)."""
+    path = tmp_path / "study.toml"
+    path.write_text(f'''[study]
+name = "mc"
+seed = 7
+samples = {samples}
+[scenes]
+c2 = "{SCENE}"
+[grid]
+"terrain.slope" = ["-10 deg", "10 deg"]
+[dispersions]
+"initial.velocity[1]" = {{ dist = "uniform", low = "0 ft/s", high = "10 ft/s" }}
+"initial.heading" = {{ dist = "uniform", low = "-90 deg", high = "90 deg" }}
+"terrain.mu_dynamic" = {{ dist = "truncated_normal", mean = 0.8, sd = 0.2, low = 0.4, high = 1.0 }}
+"legs.cell_factors" = {{ dist = "normal", mean = 1.0, sd = 0.05, per_cell = true }}
+[criteria]
+preset = "instrument"
+{extra}''')
+    return path
+
+
+def _contents(db: Path) -> list[tuple]:
+    """Every stored run, timing columns left out, in run-id order."""
+    con = sqlite3.connect(db)
+    cur = con.execute("SELECT * FROM runs ORDER BY run_id")
+    names = [d[0] for d in cur.description]
+    rows = [tuple((k, v) for k, v in zip(names, r) if k not in TIMING) for r in cur]
+    con.close()
+    return rows
+
+
+def test_wilson_interval_closed_forms():
+    """Wilson (1927): for k = 0 the upper bound is z^2 / (n + z^2) exactly; the interval is symmetric about
+    the centre (k + z^2/2) / (n + z^2). Round-off tolerance."""
+    z2 = 1.959963984540054 ** 2
+    assert wilson(0, 40) == pytest.approx((0.0, z2 / (40 + z2)), abs=1e-15)
+    lo, hi = wilson(13, 50)
+    assert (lo + hi) / 2 == pytest.approx((13 + z2 / 2) / (50 + z2), rel=1e-14)
+
+
+def test_truncated_normal_draws_have_the_closed_form_mean():
+    """Mean of N(10, 1.146) truncated to [5, 12]: mu - sd (phi(b) - phi(a)) / (Phi(b) - Phi(a)) (closed form).
+    200,000 draws: standard error sd_trunc / sqrt(n) < 0.003, so 0.01 is over three standard errors."""
+    from scipy.stats import norm
+    node = Node("s.toml", "dispersions", {"x": {"dist": "truncated_normal", "mean": "10 deg", "sd": "0.02 rad",
+                                                "low": "5 deg", "high": "12 deg"}})
+    d = read_dispersion(node, "x")
+    mu, sd, lo, hi = d.params
+    a, b = (lo - mu) / sd, (hi - mu) / sd
+    exact = mu - sd * (norm.pdf(b) - norm.pdf(a)) / (norm.cdf(b) - norm.cdf(a))
+    x = d.draw(np.random.default_rng(1), (200_000,))
+    assert d.unit == "degree" and x.min() >= lo and x.max() <= hi
+    assert x.mean() == pytest.approx(exact, abs=0.01)
+
+
+def test_runs_depend_only_on_seed_and_sample(tmp_path):
+    """Sample k draws the same values at every grid point and in every study size (default_rng([seed, k]))."""
+    small = read_study(_study(tmp_path, samples=3))
+    big = read_study(_study(tmp_path, samples=30))
+    by_id = {r.run_id: r for r in big.runs}
+    assert len(small.runs) == 6 and len(big.runs) == 60
+    for r in small.runs:
+        head, k = r.run_id.rsplit("-", 1)
+        twin = by_id[f"{head}-{int(k):02d}"]
+        assert r.overrides == twin.overrides
+    first, second = big.runs[0], big.runs[30]
+    assert first.overrides["initial.heading"] == second.overrides["initial.heading"]
+    assert first.overrides["terrain.slope"] != second.overrides["terrain.slope"]
+
+
+def test_backends_store_identical_runs(tmp_path):
+    """Serial, a 2-process pool and a 2-worker Dask LocalCluster store the same runs.sqlite rows (every
+    column but the timing ones), and outcomes.json agrees."""
+    pytest.importorskip("distributed")
+    study = read_study(_study(tmp_path))
+    outs = {b: tmp_path / b for b in ("serial", "pool", "dask")}
+    for backend, out in outs.items():
+        stats = run_sweep(study, out, backend, workers=2, quiet=True)
+        assert stats.computed == 24 and stats.failed == 0
+    ref = _contents(outs["serial"] / "runs.sqlite")
+    assert len(ref) == 24
+    assert _contents(outs["pool"] / "runs.sqlite") == ref
+    assert _contents(outs["dask"] / "runs.sqlite") == ref
+
+
+def test_rerun_skips_done_runs_and_reruns_changed_ones(tmp_path):
+    """A second sweep into the same folder computes nothing; changing a scene value reruns only the runs it
+    changes (a new inputs hash)."""
+    study = read_study(_study(tmp_path, samples=2))
+    assert run_sweep(study, tmp_path / "o", "serial", quiet=True).computed == 4
+    assert run_sweep(study, tmp_path / "o", "serial", quiet=True).computed == 0
+    text = _study(tmp_path, samples=2).read_text().replace('"-10 deg", "10 deg"', '"-10 deg", "12 deg"')
+    (tmp_path / "study.toml").write_text(text)
+    changed = read_study(tmp_path / "study.toml")
+    stats = run_sweep(changed, tmp_path / "o", "serial", quiet=True)
+    assert (stats.computed, stats.skipped) == (2, 2)
+
+
+def test_a_run_that_raises_is_stored_failed_and_the_study_goes_on(tmp_path):
+    """A dispersion that makes a bad scene value (mu_dynamic above mu_static) fails its run only."""
+    path = _study(tmp_path, samples=4, extra="")
+    text = path.read_text().replace("mean = 0.8, sd = 0.2, low = 0.4, high = 1.0",
+                                    "mean = 1.6, sd = 0.2, low = 1.2, high = 2.0")
+    text = text.replace("[grid]\n", '[grid]\n"terrain.mu_static" = [1.5]\n')
+    path.write_text(text)
+    study = read_study(path)
+    stats = run_sweep(study, tmp_path / "o", "pool", workers=2, quiet=True)
+    con = sqlite3.connect(tmp_path / "o" / "runs.sqlite")
+    rows = con.execute("SELECT status, message, terrain_mu_dynamic FROM runs").fetchall()
+    bad = [r for r in rows if r[2] > 1.5]
+    assert bad and stats.failed == len(bad) and stats.computed == 8
+    assert all(r[0] == "failed" and "terrain.mu_dynamic" in r[1] for r in bad)
+    assert all(r[0] == "done" for r in rows if r[2] <= 1.5)
+    doc = json.loads(write_results(study, tmp_path / "o")[0].read_text())
+    assert sorted(doc["failed"]) == sorted(r.run_id for r in study.runs
+                                           if r.overrides["terrain.mu_dynamic"] > 1.5)
+
+
+def _crash_on_one_run(task):
+    """A worker that dies (as on an out-of-memory kill) on one run; the others run normally."""
+    from alightsize import sweep
+    if task["run_id"] == "c2-1-1":
+        os._exit(9)
+    return sweep._real_execute(task)
+
+
+def test_a_dying_worker_loses_no_finished_run(tmp_path, monkeypatch):
+    """The run that kills its worker is stored failed (after a retry alone); every other run is done."""
+    from alightsize import sweep
+    if "fork" not in __import__("multiprocessing").get_all_start_methods():
+        pytest.skip("the injected crash reaches the workers through fork")
+    monkeypatch.setattr(sweep, "_real_execute", sweep.execute, raising=False)
+    monkeypatch.setattr(sweep, "execute", _crash_on_one_run)
+    study = read_study(_study(tmp_path, samples=4))
+    stats = run_sweep(study, tmp_path / "o", "pool", workers=2, quiet=True)
+    rows = dict(sqlite3.connect(tmp_path / "o" / "runs.sqlite").execute("SELECT run_id, status FROM runs"))
+    assert len(rows) == 8 and stats.failed == 1
+    assert rows.pop("c2-1-1") == "failed" and set(rows.values()) == {"done"}
+
+
+def test_sigkill_mid_sweep_loses_nothing_and_recomputes_nothing(tmp_path):
+    """kill -9 of a running sweep: every run committed before the kill survives with its finish time, and
+    the re-run computes exactly the others."""
+    path = _study(tmp_path, samples=40)
+    out = tmp_path / "o"
+    cmd = [sys.executable, "-m", "alightsize", "sweep", str(path), "--out", str(out), "--workers", "2", "--quiet"]
+    proc = subprocess.Popen(cmd, cwd=ROOT, start_new_session=True, stdout=subprocess.DEVNULL)
+    db = out / "runs.sqlite"
+    deadline = time.time() + 120
+    done = 0
+    while time.time() < deadline and done < 10:
+        time.sleep(0.2)
+        if db.exists():
+            try:
+                done = sqlite3.connect(db).execute("SELECT count(*) FROM runs WHERE status='done'").fetchone()[0]
+            except sqlite3.OperationalError:          # table not created yet
+                pass
+    os.killpg(proc.pid, signal.SIGKILL)
+    proc.wait()
+    before = dict(sqlite3.connect(db).execute("SELECT run_id, finished_at FROM runs WHERE status='done'"))
+    assert 10 <= len(before) < 80
+    study = read_study(path)
+    stats = run_sweep(study, out, "pool", workers=2, quiet=True)
+    after = dict(sqlite3.connect(db).execute("SELECT run_id, finished_at FROM runs WHERE status='done'"))
+    assert stats.skipped == len(before) and stats.computed == 80 - len(before)
+    assert len(after) == 80 and all(after[k] == v for k, v in before.items())
+
+
+def test_sweep_command_writes_the_contract_outputs(tmp_path):
+    """`alightsize sweep` writes runs.sqlite, outcomes.json (probabilities with Wilson intervals summing to
+    the done runs), outcomes.xlsx and report.html; user text in the study is escaped in the report."""
+    path = _study(tmp_path, samples=4)
+    text = path.read_text().replace('name = "mc"', 'name = "mc"\ntitle = "<b>MC</b> =1+1"')
+    path.write_text(text)
+    assert main(["sweep", str(path), "--out", str(tmp_path / "o"), "--workers", "2", "--quiet"]) == 0
+    doc = json.loads((tmp_path / "o" / "outcomes.json").read_text())
+    assert doc["schema"] == "alightsize.sweep/1" and doc["done"] == 8
+    assert sum(v["count"] for v in doc["outcomes"].values()) == 8
+    for v in doc["outcomes"].values():
+        assert v["ci95"] == pytest.approx(list(wilson(v["count"], 8)))
+    html = (tmp_path / "o" / "report.html").read_text()
+    assert "&lt;b&gt;MC&lt;/b&gt;" in html and "<b>MC" not in html
+    from openpyxl import load_workbook
+    ws = load_workbook(tmp_path / "o" / "outcomes.xlsx")["Runs"]
+    assert all(c.data_type != "f" for row in ws.iter_rows() for c in row)
+
+
+def test_study_input_errors_exit_2(tmp_path, capsys):
+    """A dispersion without a seed, or of an unknown kind, is bad input naming the key."""
+    path = _study(tmp_path).read_text()
+    (tmp_path / "a.toml").write_text(path.replace("seed = 7\n", ""))
+    assert main(["sweep", str(tmp_path / "a.toml"), "--out", str(tmp_path / "o")]) == 2
+    assert "study.seed" in capsys.readouterr().err
+    (tmp_path / "b.toml").write_text(path.replace('dist = "uniform"', 'dist = "lognormal"', 1))
+    with pytest.raises(InputError) as e:
+        read_study(tmp_path / "b.toml")
+    assert "dispersions.initial.velocity[1].dist" in str(e.value) and "lognormal" in str(e.value)
