@@ -76,6 +76,9 @@ def summary_json(res: DesignResult) -> dict:
     if res.config.loads is not None:
         from .loads import loads_json
         out["loads"] = {k: v for k, v in loads_json(res.config.loads).items() if k != "schema"}
+    if res.config.landings is not None:
+        from .landing_loads import landings_json
+        out["landings"] = landings_json(res.config.landings)
     if res.sizings:
         out["sizing"] = [{"item": s.item, "dimension": s.dimension, "printed_m": s.printed, "sized_m": s.sized,
                           "design_factor_printed": _finite(s.factor_printed), "design_factor_sized": _finite(s.factor_sized),

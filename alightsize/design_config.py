@@ -7,6 +7,7 @@ from pathlib import Path
 
 from .config import Node, load_toml
 from .items import Item, read_item
+from .landing_loads import Landings, run_landings
 from .loads import LoadReference, LoadsResult, attach, load_from
 from .materials import library
 
@@ -26,6 +27,7 @@ class DesignConfig:
     items: tuple[Item, ...]
     loads: LoadsResult | None = None
     load_refs: tuple[LoadReference, ...] = ()
+    landings: Landings | None = None
 
 
 def _loads(root: Node, path: Path) -> LoadsResult | None:
@@ -46,8 +48,10 @@ def _loads(root: Node, path: Path) -> LoadsResult | None:
     return res
 
 
-def read_design(path: str | Path) -> DesignConfig:
-    """Read and validate a design config; any problem is an InputError naming file and key path."""
+def read_design(path: str | Path, landings_dir: Path | None = None) -> DesignConfig:
+    """Read and validate a design config; any problem is an InputError naming file and key path. Landing
+    cases (`[landings]`) run before the checks read their loads, into `landings_dir` (resumable) or a
+    temporary folder."""
     path = Path(path)
     root = load_toml(path)
     d = root.table("design")
@@ -71,11 +75,18 @@ def read_design(path: str | Path) -> DesignConfig:
             raise d.error("materials", "paths of existing material files or folders", str(p))
     mats = library(extra)
     loads = _loads(root, path)
+    land_node = root.table("landings", optional=True)
     items = tuple(read_item(n, mats, required) for n in root.tables("item"))
     names = [i.name for i in items]
     dup = next((n for n in names if names.count(n) > 1), None)
     if dup:
         raise root.error("item", "item names unique within a configuration", f"{dup!r} twice")
     root.finish()
+    landings = None
+    if land_node is not None:                  # the config is valid: land, then read the checks' loads again
+        loads, landings = run_landings(land_node, path, loads, landings_dir)
+        attach(root, loads)
+        root.context["load_references"] = []
+        items = tuple(read_item(n, mats, required) for n in root.tables("item"))
     return DesignConfig(path, configuration, title, capsule, legs, units, required, decimals, items, loads,
-                        tuple(root.context.get("load_references", ())))
+                        tuple(root.context.get("load_references", ())), landings)

@@ -81,6 +81,15 @@ class LoadReference:
     extreme: Extreme | None           # None for the telescoping free body
 
 
+def pick(res: LoadsResult, env: str, member: str, sense: str) -> Extreme | None:
+    """The extreme of `member` in envelope `env` for a sense (magnitude: the larger of the two)."""
+    row = next(r for r in res.envelopes[env] if r.member == member)
+    cands = {"tension": [row.tension], "compression": [row.compression],
+             "magnitude": [row.tension, row.compression]}[sense]
+    cands = [e for e in cands if e is not None]
+    return max(cands, key=lambda e: abs(e.value)) if cands else None
+
+
 def _resolve(res: LoadsResult, node: Node, name: str, ref: dict) -> float:
     sub = Node(node.file, node.key(name), ref, node.context)
     sub.allow(("envelope", "member", "sense", "factor"))
@@ -100,13 +109,9 @@ def _resolve(res: LoadsResult, node: Node, name: str, ref: dict) -> float:
             raise sub.error("envelope", "one of " + ", ".join(repr(k) for k in [*res.envelopes, TELESCOPING]), repr(env))
         if member not in MEMBERS:
             raise sub.error("member", "one of " + ", ".join(MEMBERS), repr(member))
-        row = next(r for r in res.envelopes[env] if r.member == member)
-        cands = {"tension": [row.tension], "compression": [row.compression],
-                 "magnitude": [row.tension, row.compression]}[sense]
-        cands = [e for e in cands if e is not None]
-        if not cands:
+        extreme = pick(res, env, member, sense)
+        if extreme is None:
             raise sub.error("sense", f"a sense in which {member} is loaded in envelope {env!r}", repr(sense))
-        extreme = max(cands, key=lambda e: abs(e.value))
         value = abs(extreme.value) * factor
     node.context.setdefault("load_references", []).append(
         LoadReference(node.key(name), env, member, sense, factor, value, extreme))

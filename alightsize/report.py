@@ -87,11 +87,21 @@ def _reference_label(cfg, key: str) -> str:
 
 
 def _references(cfg, system: str) -> list[dict]:
+    """The checks' envelope loads; with landing cases also the quasi-static load and which governed."""
     from math import degrees
-    return [{"key": _reference_label(cfg, r.key), "envelope": r.envelope, "member": r.member, "sense": r.sense, "factor": f"{r.factor:g}",
-             "value": fmt(r.value, "force", system),
-             "at": ", ".join(f"{degrees(a):+.0f}" for a in r.extreme.at) if r.extreme else "",
-             "configuration": r.extreme.configuration if r.extreme else ""} for r in cfg.load_refs]
+    from .landing_loads import LANDING, quasi_static_load
+    out = []
+    for r in cfg.load_refs:
+        row = {"key": _reference_label(cfg, r.key), "envelope": r.envelope, "member": r.member, "sense": r.sense,
+               "factor": f"{r.factor:g}", "value": fmt(r.value, "force", system),
+               "at": ", ".join(f"{degrees(a):+.0f}" for a in r.extreme.at) if r.extreme else "",
+               "configuration": r.extreme.configuration if r.extreme else "", "quasi_static": None, "governs": ""}
+        if cfg.landings is not None and r.extreme is not None and r.envelope in cfg.landings.envelopes:
+            qs = quasi_static_load(cfg.landings, r.envelope, r.member, r.sense)
+            row["quasi_static"] = fmt(qs * r.factor, "force", system) if qs is not None else "-"
+            row["governs"] = "landing" if r.extreme.configuration.startswith(LANDING) else "quasi-static"
+        out.append(row)
+    return out
 
 
 def render_loads(res, system: str, kind: str) -> str:

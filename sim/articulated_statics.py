@@ -55,7 +55,8 @@ class _Terms:
 
 
 def _terms(g: ArticulatedGeometry, alpha, beta, psi, af1, af2) -> _Terms:
-    alpha, beta, psi, af1, af2 = np.broadcast_arrays(*(np.asarray(x, float) for x in (alpha, beta, psi, af1, af2)))
+    alpha, beta, psi, af1, af2 = (np.array(x) for x in   # own copies: compiled code takes no broadcast views
+                                  np.broadcast_arrays(*(np.asarray(x, float) for x in (alpha, beta, psi, af1, af2))))
     eta = upper_angle(g, psi)
     af21, af22, af23 = lower_force_components(g, alpha, beta, af2)
     return _Terms(np.sin(alpha), np.cos(alpha), np.sin(beta), np.cos(beta), np.sin(psi), np.cos(psi),
