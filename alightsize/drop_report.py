@@ -28,7 +28,7 @@ from sim.landing import Result, simulate  # noqa: E402
 from . import __version__, drop_tables  # noqa: E402
 from .atomic import write_atomic  # noqa: E402
 from .landing_output import body_histories, summary  # noqa: E402
-from .report import _env  # noqa: E402
+from .report import template_env  # noqa: E402
 from .scene_config import SceneConfig, read_scene  # noqa: E402
 from .shock_spectrum import default_frequencies, srs  # noqa: E402
 
@@ -252,7 +252,7 @@ def context(doc: dict) -> dict:
 
 def render(doc: dict, kind: str) -> str:
     """The report as HTML (autoescaped) or Markdown (kind "html" or "md")."""
-    return _env(kind == "html").get_template(f"drops_report.{kind}.j2").render(**context(doc))
+    return template_env(kind == "html").get_template(f"drops_report.{kind}.j2").render(**context(doc))
 
 
 # ------------------------------------------------------------------ plots

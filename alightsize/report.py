@@ -109,7 +109,7 @@ def render_loads(res, system: str, kind: str) -> str:
     from .loads_output import context as loads_context
     ctx = {"title": res.config.title, "source": res.config.path.name, "units": system, "version": __version__,
            "loads": loads_context(res, system), "references": []}
-    return _env(kind == "html").get_template(f"loads_report.{kind}.j2").render(**ctx)
+    return template_env(kind == "html").get_template(f"loads_report.{kind}.j2").render(**ctx)
 
 
 def _md_escape(text: str) -> str:
@@ -119,7 +119,7 @@ def _md_escape(text: str) -> str:
     return out
 
 
-def _env(autoescape: bool) -> jinja2.Environment:
+def template_env(autoescape: bool) -> jinja2.Environment:
     env = jinja2.Environment(loader=jinja2.FileSystemLoader(str(data_dir("templates"))),
                              autoescape=autoescape, undefined=jinja2.StrictUndefined,
                              trim_blocks=True, lstrip_blocks=True, keep_trailing_newline=True)
@@ -128,14 +128,14 @@ def _env(autoescape: bool) -> jinja2.Environment:
 
 
 def render_html(res) -> str:
-    return _env(True).get_template("design_report.html.j2").render(**context(res))
+    return template_env(True).get_template("design_report.html.j2").render(**context(res))
 
 
 def render_markdown(res) -> str:
-    return _env(False).get_template("design_report.md.j2").render(**context(res))
+    return template_env(False).get_template("design_report.md.j2").render(**context(res))
 
 
-def _text(cell, value) -> None:
+def text_cell(cell, value) -> None:
     """Put user text in a cell as text, never as a formula."""
     cell.value = value
     if isinstance(value, str):
@@ -159,15 +159,15 @@ def write_workbook(res, path: Path) -> None:
                round(to_display(o.allowable, "stress", system), 1) if o.allowable is not None else None,
                round(o.factor, 4) if isfinite(o.factor) else None, r.required, "yes" if r.ok else "NO"]
         ws.append(row)
-        _text(ws.cell(ws.max_row, 1), r.item.name)
-        _text(ws.cell(ws.max_row, 3), r.item.material.name)
+        text_cell(ws.cell(ws.max_row, 1), r.item.name)
+        text_cell(ws.cell(ws.max_row, 3), r.item.material.name)
     wu = unit_label("mass", system)
     wsw = wb.create_sheet("Weights")
     wsw.append(["Item", "Count per leg", f"Weight each ({wu})", f"Weight per leg ({wu})"])
     for w in res.weights:
         each = round(to_display(w.each, "mass", system), 4)
         wsw.append([None, w.count, each, round(each * w.count, 4)])
-        _text(wsw.cell(wsw.max_row, 1), w.label)
+        text_cell(wsw.cell(wsw.max_row, 1), w.label)
     per_leg = to_display(res.per_leg, "mass", system)
     wsw.append(["Total each leg", None, None, round(per_leg, 4)])
     wsw.append([f"Total {cfg.legs} legs", None, None, round(per_leg * cfg.legs, 4)])

@@ -100,7 +100,7 @@ def execute(task: dict) -> dict:
     return row
 
 
-def _serial(tasks: list[dict], workers: int) -> Iterator[dict]:
+def _serial(tasks: list[dict]) -> Iterator[dict]:
     for t in tasks:
         yield execute(t)
 
@@ -204,7 +204,7 @@ def run_sweep(study: Study, out: Path, backend: str = "pool", workers: int | Non
     t0 = time.perf_counter()
     runner: Iterable[dict]
     if backend == "serial" or not todo:
-        runner = _serial(todo, 1)
+        runner = _serial(todo)
     elif backend == "pool":
         runner = _pool(todo, min(workers, len(todo)))
     elif backend == "dask":

@@ -16,7 +16,7 @@ from openpyxl.styles import Font
 
 from . import __version__
 from .atomic import write_atomic
-from .report import _env, _text
+from .report import template_env, text_cell
 from .run_store import RunStore
 from .study import Study, parameter_columns
 
@@ -199,12 +199,12 @@ def write_workbook(doc: dict, rows: list[dict], path: Path) -> Path:
     for r in rows:
         ws.append([None] * len(names))
         for j, k in enumerate(names):
-            _text(ws.cell(ws.max_row, j + 1), r.get(k))
+            text_cell(ws.cell(ws.max_row, j + 1), r.get(k))
     st = wb.create_sheet("Outcomes")
     st.append(["outcome", "runs", "probability", "95 % low", "95 % high"])
     for k, v in doc["outcome_classes"].items():
         st.append([None, v["count"], v["probability"], *v["ci95"]])
-        _text(st.cell(st.max_row, 1), k)
+        text_cell(st.cell(st.max_row, 1), k)
     mat = doc["matrix"]
     if mat:
         sm = wb.create_sheet("Matrix")
@@ -212,11 +212,11 @@ def write_workbook(doc: dict, rows: list[dict], path: Path) -> Path:
         for cell in mat["cells"]:
             sm.append([None] * (len(mat["rows"]) + len(mat["columns"])))
             for j, v in enumerate(cell["row"]):
-                _text(sm.cell(sm.max_row, j + 1), v)
+                text_cell(sm.cell(sm.max_row, j + 1), v)
             for j, c in enumerate(mat["columns"]):
                 v = cell["values"].get(c)
                 text = "" if v is None else v["symbol"] + ("" if v["agrees"] in (None, True) else f" ({v['reference']})")
-                _text(sm.cell(sm.max_row, len(mat["rows"]) + j + 1), text)
+                text_cell(sm.cell(sm.max_row, len(mat["rows"]) + j + 1), text)
     for sheet in wb.worksheets:
         for c in sheet[1]:
             c.font = Font(bold=True)
@@ -241,7 +241,7 @@ def write_results(study: Study, out: Path) -> list[Path]:
         plots.append(boundary_plot(done, axes, out / "boundary.png").name)
     if len(done) >= 20:
         plots.append(distribution_plot(done, out / "distributions.png").name)
-    html = _env(True).get_template("sweep_report.html.j2").render(doc=doc, plots=plots, version=__version__, symbols=SYMBOL,
+    html = template_env(True).get_template("sweep_report.html.j2").render(doc=doc, plots=plots, version=__version__, symbols=SYMBOL,
                                                                   source=study.path.name)
     files.append(write_atomic(out / "report.html", html))
     return files + [out / p for p in plots]
