@@ -24,6 +24,7 @@ import itertools
 import json
 import string
 from dataclasses import dataclass
+from functools import lru_cache
 from pathlib import Path
 
 import numpy as np
@@ -237,6 +238,7 @@ _SUFFIX = {(0, 1, 0): ("m", "m"), (0, 1, -1): ("m_s", "m/s"), (0, 0, -1): ("rad_
            (1, 2, -2): ("J", "J")}
 
 
+@lru_cache(maxsize=4096)
 def _si(value) -> tuple[str, float | str]:
     """(unit suffix, value): quantities in SI (angles in deg, the contract's _deg), numbers as they are,
     other text as text."""

@@ -101,12 +101,14 @@ def test_runs_depend_only_on_seed_and_sample(tmp_path):
 def test_backends_store_identical_runs(tmp_path):
     """Serial, a 2-process pool and a 2-worker Dask LocalCluster store the same runs.sqlite rows (every
     column but the timing ones), and outcomes.json agrees."""
-    pytest.importorskip("distributed")
+    distributed = pytest.importorskip("distributed")
     study = read_study(_study(tmp_path))
     outs = {b: tmp_path / b for b in ("serial", "pool", "dask")}
-    for backend, out in outs.items():
-        stats = run_sweep(study, out, backend, workers=2, quiet=True)
-        assert stats.computed == 24 and stats.failed == 0
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=None) as cluster:
+        for backend, out in outs.items():                   # dask through --scheduler's path: an address
+            address = cluster.scheduler_address if backend == "dask" else None
+            stats = run_sweep(study, out, backend, workers=2, scheduler=address, quiet=True)
+            assert stats.computed == 24 and stats.failed == 0
     ref = _contents(outs["serial"] / "runs.sqlite")
     assert len(ref) == 24
     assert _contents(outs["pool"] / "runs.sqlite") == ref
@@ -197,12 +199,13 @@ def test_sigkill_mid_sweep_loses_nothing_and_recomputes_nothing(tmp_path):
 
 
 def test_sweep_command_writes_the_contract_outputs(tmp_path):
-    """`alightsize sweep` writes runs.sqlite, outcomes.json (probabilities with Wilson intervals summing to
+    """`alightsize sweep --dask-local 2` writes runs.sqlite, outcomes.json (probabilities with Wilson intervals summing to
     the done runs), outcomes.xlsx and report.html; user text in the study is escaped in the report."""
     path = _study(tmp_path, samples=4)
     text = path.read_text().replace('name = "mc"', 'name = "mc"\ntitle = "<b>MC</b> =1+1"')
     path.write_text(text)
-    assert main(["sweep", str(path), "--out", str(tmp_path / "o"), "--workers", "2", "--quiet"]) == 0
+    pytest.importorskip("distributed")
+    assert main(["sweep", str(path), "--out", str(tmp_path / "o"), "--dask-local", "2", "--quiet"]) == 0
     doc = json.loads((tmp_path / "o" / "outcomes.json").read_text())
     assert doc["schema"] == "alightsize.sweep/1" and doc["done"] == 8
     assert sum(v["count"] for v in doc["outcomes"].values()) == 8
