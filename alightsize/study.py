@@ -39,6 +39,9 @@ from .scene_config import SceneConfig, load_scene_toml, read_scene
 from .units import registry
 
 BOTTOMED_KIND = {"axial": "axial", "rot": "rotational_pad", "upper": "psi", "lower": "alpha"}
+# The printed legends have one symbol for both: "+ FLIGHT TIME OUT, CAPSULE 'WALKING'" (Tables 3-4,
+# l. 1132, 1163; Sec. II.B: every run stopped by the time limit was called walking).
+PRINTED_AS = {"time_out": "walking"}
 MAX_RUNS = 1_000_000
 
 
@@ -278,6 +281,11 @@ def parameter_columns(overrides: dict) -> dict:
     for key, value in overrides.items():
         put(key.replace(".", "_").replace("[", "_").replace("]", ""), value)
     return out
+
+
+def agrees(outcome_class: str, printed: str) -> bool:
+    """Whether a simulated outcome class reads as the printed one (time-out and walking share a symbol)."""
+    return PRINTED_AS.get(outcome_class, outcome_class) == PRINTED_AS.get(printed, printed)
 
 
 def outcome_class(cfg: SceneConfig, res) -> str:

@@ -23,7 +23,7 @@ from typing import Callable, Iterable, Iterator
 
 from .errors import InputError
 from .run_store import RunStore
-from .study import Run, Study, outcome_class, parameter_columns, scene_hash
+from .study import Run, Study, agrees, outcome_class, parameter_columns, scene_hash
 
 
 @dataclass(frozen=True)
@@ -79,7 +79,7 @@ def execute(task: dict) -> dict:
         s = summary(cfg, res)
         row.update(_figures(s))
         row["outcome_class"] = outcome_class(cfg, res)
-        row["agrees"] = None if task["reference"] is None else int(row["outcome_class"] == task["reference"])
+        row["agrees"] = None if task["reference"] is None else int(agrees(row["outcome_class"], task["reference"]))
         if task["criteria"] is not None:
             failures = task["criteria"].failures(s)
             row["criteria_ok"], row["criteria_failed"] = int(not failures), "; ".join(failures)
