@@ -4,7 +4,7 @@ State y = (r, v terrain axes; q principal -> terrain; omega principal axes; W th
 the capsule). Dormand-Prince 5(4) with error control (or fixed steps) advances it. Discrete memory lives in
 arrays the caller owns and changes only when a step is accepted (`_commit`): cell maxima, footpad positions
 and slip state, contact flags. Touchdown, lift-off and stick-to-slip are located to `event_tol` seconds:
-first on the step's Hermite interpolant (leg evaluations only), then by real trial steps aimed just short of
+first on the step's continuous extension (leg evaluations only), then by real trial steps aimed just short of
 the crossing, the step accepted before it. When no leg touches an axisymmetric capsule a step is the
 closed-form free flight (eq. 62-88) instead. The loop returns to the caller on a status: the end time, a full history
 buffer, or an outcome it detects (bottoming, tip angle, body contact, quiescence, the energy criterion).
@@ -29,6 +29,8 @@ A = np.array([[0, 0, 0, 0, 0, 0], [1 / 5, 0, 0, 0, 0, 0], [3 / 40, 9 / 40, 0, 0,
               [35 / 384, 0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84]])
 B5 = np.array([35 / 384, 0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84, 0])
 B4 = np.array([5179 / 57600, 0, 7571 / 16695, 393 / 640, -92097 / 339200, 187 / 2100, 1 / 40])
+D = np.array([-12715105075 / 11282082432, 0, 87487479700 / 32700410799, -10690763975 / 1880347072,
+              701980252875 / 199316789632, -1453857185 / 822651844, 69997945 / 29380423])   # dense output (CONTD5)
 NY = 14
 
 # Statuses returned to the caller.
@@ -265,18 +267,24 @@ def _monitor(geo, mass, inertia, gravity, bottoming, up, body, order, mem, conta
 
 
 @njit(cache=True)
-def _hermite(y0, y1, f0, f1, h, theta, out):
-    """Cubic Hermite interpolant of a step at fraction theta (third order; the event search's guide)."""
+def _dense(y0, y1, K, h, theta, out):
+    """Dormand-Prince's continuous extension of a step at fraction theta (fourth order; the event search's
+    guide): the cubic Hermite of (y0, f0, y1, f1) plus theta^2 (1 - theta)^2 h sum(d_i k_i) (Hairer, Norsett
+    and Wanner 1993, Sec. II.6, CONTD5)."""
+    s = 1.0 - theta
     for c in range(NY):
         d = y1[c] - y0[c]
-        out[c] = y0[c] + theta * d + theta * (theta - 1.0) * ((1.0 - 2.0 * theta) * d + (theta - 1.0) * h * f0[c]
-                                                               + theta * h * f1[c])
+        r3 = h * K[0, c] - d
+        r4 = d - h * K[6, c] - r3
+        r5 = h * (D[0] * K[0, c] + D[2] * K[2, c] + D[3] * K[3, c] + D[4] * K[4, c] + D[5] * K[5, c]
+                  + D[6] * K[6, c])
+        out[c] = y0[c] + theta * (d + s * (r3 + theta * (r4 + s * r5)))
 
 
 @njit(cache=True)
-def _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, y1, f0, f1, h, j, g_prev, g1, tol, yt, gm, ga,
+def _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, y1, K, h, j, g_prev, g1, tol, yt, gm, ga,
            gb, work):
-    """The earliest crossing on the step's Hermite interpolant, found by Illinois false position with one leg
+    """The earliest crossing on the step's continuous extension, found by Illinois false position with one leg
     evaluation per point (no integration): (time estimate, slope of the crossing function there, its index)."""
     Pt, slt, dt, ft, Xt, mt = work
     a, b, side = 0.0, h, 0
@@ -289,7 +297,7 @@ def _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, y1, f0, f1
         m = b - fb * (b - a) / (fb - fa)
         if not (a < m < b):
             m = 0.5 * (a + b)
-        _hermite(y, y1, f0, f1, h, m / h, yt)
+        _dense(y, y1, K, h, m / h, yt)
         q = yt[6:10] / np.sqrt(yt[6] ** 2 + yt[7] ** 2 + yt[8] ** 2 + yt[9] ** 2)
         _legs(geo, cells, mu, mem, contact, P, sliding, shape, yt, Pt, slt, dt, ft, Xt, mt, quat_matrix(q))
         _events(cells, geo, mu, mem, contact, sliding, shape, armed, yt, dt, mt, gm, False)
@@ -375,7 +383,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
         _events(cells, geo, mu, mem, contact, sliding, shape, armed, y1, dt, mt, g1, False)
         j = _first(g_prev, g1)
         if j >= 0:
-            # The earliest event: located first on the step's Hermite interpolant (_guide), then by real trial
+            # The earliest event: located first on the step's continuous extension (_guide), then by real trial
             # steps aimed just short of it (Newton with the interpolant's slope, Illinois on the real bracket
             # if that stalls); the function followed is the one crossing first in the current bracket. The
             # step is accepted at the lower end, before the crossing, and that one function switched there
@@ -386,7 +394,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
             # reach sits at zero until it lifts off: no secant can place that crossing).
             cnt[K_EVENTS] += 1
             tol = ctl[C_EVENTTOL]
-            est, slope, j = _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, y1, K[0], K[6], h, j,
+            est, slope, j = _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, y1, K, h, j,
                                    g_prev, g1, 0.1 * tol, yt, gm, ga, gb, work)
             lo, hi, side, mid, a_hi, newton = 0.0, h, 0, -1.0, g1[j], 0
             g_lo[:] = g_prev
