@@ -188,6 +188,12 @@ def _kinds(failed: str | None) -> list[str]:
     return out
 
 
+def _put(sheet, row: int, values: list) -> None:
+    """One row of cells at a known row number (ws.max_row is a scan: quadratic over thousands of runs)."""
+    for j, v in enumerate(values):
+        text_cell(sheet.cell(row, j + 1), v)
+
+
 def write_workbook(doc: dict, rows: list[dict], path: Path) -> Path:
     """Runs, outcome statistics and the outcome matrix; text cells never become formulas."""
     wb = Workbook()
@@ -195,28 +201,21 @@ def write_workbook(doc: dict, rows: list[dict], path: Path) -> Path:
     ws.title = "Runs"
     names = sorted({k for r in rows for k in r}, key=lambda k: (k not in ("run_id", "scene", "status", "outcome",
                                                                          "outcome_class"), k))
-    ws.append(names)
-    for r in rows:
-        ws.append([None] * len(names))
-        for j, k in enumerate(names):
-            text_cell(ws.cell(ws.max_row, j + 1), r.get(k))
+    _put(ws, 1, names)
+    for i, r in enumerate(rows):
+        _put(ws, i + 2, [r.get(k) for k in names])
     st = wb.create_sheet("Outcomes")
-    st.append(["outcome", "runs", "probability", "95 % low", "95 % high"])
-    for k, v in doc["outcome_classes"].items():
-        st.append([None, v["count"], v["probability"], *v["ci95"]])
-        text_cell(st.cell(st.max_row, 1), k)
+    _put(st, 1, ["outcome", "runs", "probability", "95 % low", "95 % high"])
+    for i, (k, v) in enumerate(doc["outcome_classes"].items()):
+        _put(st, i + 2, [k, v["count"], v["probability"], *v["ci95"]])
     mat = doc["matrix"]
     if mat:
         sm = wb.create_sheet("Matrix")
-        sm.append(mat["rows"] + [f"{mat['column']} {c}" for c in mat["columns"]])
-        for cell in mat["cells"]:
-            sm.append([None] * (len(mat["rows"]) + len(mat["columns"])))
-            for j, v in enumerate(cell["row"]):
-                text_cell(sm.cell(sm.max_row, j + 1), v)
-            for j, c in enumerate(mat["columns"]):
-                v = cell["values"].get(c)
-                text = "" if v is None else v["symbol"] + ("" if v["agrees"] in (None, True) else f" ({v['reference']})")
-                text_cell(sm.cell(sm.max_row, len(mat["rows"]) + j + 1), text)
+        _put(sm, 1, mat["rows"] + [f"{mat['column']} {c}" for c in mat["columns"]])
+        for i, cell in enumerate(mat["cells"]):
+            marks = [cell["values"].get(c) for c in mat["columns"]]
+            _put(sm, i + 2, cell["row"] + ["" if v is None else v["symbol"] + (
+                "" if v["agrees"] in (None, True) else f" ({v['reference']})") for v in marks])
     for sheet in wb.worksheets:
         for c in sheet[1]:
             c.font = Font(bold=True)
