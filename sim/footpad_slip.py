@@ -58,27 +58,28 @@ def _at(geo, cells, i, mem, shape, mu, P0, d0, d1, s, r, R, v, w, P, defl, frc, 
 
 
 @njit(cache=True)
-def _dip(geo, cells, i, mem, shape, mu, P0, d0, d1, a, b, r, R, v, w, P, defl, frc, X):
-    """Golden-section search for the lowest excess between a and b, stopping at the first point where it is
-    not positive; returns (s, excess)."""
+def _dip(geo, cells, i, mem, shape, mu, P0, d0, d1, a, h_a, b, r, R, v, w, P, defl, frc, X):
+    """Golden-section search for the lowest excess between a (excess h_a > 0) and b, stopping at the first
+    point where it is not positive; returns (lo, h_lo, s, h_s): that point and the left end of the search's
+    last bracket (excess positive, in reach), so that [lo, s] brackets a crossing when h_s <= 0."""
     k = 0.3819660112501051
     c, d = a + k * (b - a), b - k * (b - a)
     hc, _, okc = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, c, r, R, v, w, P, defl, frc, X)
     hd, _, okd = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, d, r, R, v, w, P, defl, frc, X)
     for _ in range(MAX_DIP):
         if okc and hc <= 0.0:
-            return c, hc
+            return a, h_a, c, hc
         if okd and hd <= 0.0:
-            return d, hd
+            return c, hc, d, hd
         if not okd or hc < hd:
             b, d, hd, okd = d, c, hc, okc
             c = a + k * (b - a)
             hc, _, okc = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, c, r, R, v, w, P, defl, frc, X)
         else:
-            a, c, hc, okc = c, d, hd, okd
+            a, h_a, c, hc, okc = c, hc, d, hd, okd
             d = b - k * (b - a)
             hd, _, okd = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, d, r, R, v, w, P, defl, frc, X)
-    return c, hc if okc else 1.0
+    return a, h_a, c, hc if okc else 1.0
 
 
 @njit(cache=True)
@@ -116,12 +117,17 @@ def footpad_force(geo, cells, i, mem, shape, P0, sliding, hold, mu_s, mu_d, r, R
         h_hi, _, ok_hi = _at(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_hi, r, R, v, w, P, defl, frc, X)
         if h_hi <= 0.0:
             break
-        if aimed:
-            # The secant promised a crossing and h came back positive: a narrow dip (a pad unloading to zero
-            # turns h back up) may lie in between. Golden-section search for its bottom.
-            s_m, h_m = _dip(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_lo, s_hi, r, R, v, w, P, defl, frc, X)
+        turned = h_lo < h_prev and h_hi > h_lo
+        if aimed or turned:
+            # The secant promised a crossing and h came back positive, or h fell and rose again (the samples
+            # bracket a minimum in (s_prev, s_hi)): a narrow dip may lie in between (a pad unloading to zero;
+            # an articulated tip crossing its peg-leg axis, where alpha passes through the seat). Golden-section
+            # search for its bottom.
+            a, h_a = (s_prev, h_prev) if turned else (s_lo, h_lo)
+            a, h_a, s_m, h_m = _dip(geo, cells, i, mem, shape, mu_d, P0, d0, d1, a, h_a, s_hi, r, R, v, w, P, defl,
+                                    frc, X)
             if h_m <= 0.0:
-                s_hi, h_hi, ok_hi = s_m, h_m, True
+                s_lo, h_lo, s_hi, h_hi, ok_hi = a, h_a, s_m, h_m, True
                 break
         s_prev, h_prev, s_lo, h_lo = s_lo, h_lo, s_hi, h_hi
         step = 4.0 * (s_lo - s_prev)
