@@ -35,7 +35,7 @@ from .vec3 import mv
 
 MAX_EXPAND = 200
 MAX_REFINE = 100
-MAX_DIP = 40         # minimization steps (to 1e-5 of the interval)
+MAX_DIP = 24         # golden-section steps: the dip is found to 1e-5 of the interval
 FLOOR = 1e-6        # N: in-plane force below this never starts a slide (round-off at zero load)
 
 
@@ -59,67 +59,27 @@ def _at(geo, cells, i, mem, shape, mu, P0, d0, d1, s, r, R, v, w, P, defl, frc, 
 
 @njit(cache=True)
 def _dip(geo, cells, i, mem, shape, mu, P0, d0, d1, a, h_a, b, r, R, v, w, P, defl, frc, X):
-    """The lowest excess between a (excess h_a > 0) and b by Brent's minimization (Brent 1973, ch. 5: golden
-    section and parabolic interpolation, to 1e-5 of the interval), stopping at the first point where it is
-    not positive (points out of reach shrink the interval from the right). Returns (lo, h_lo, s, h_s): that
-    point or the minimum, and the left end of the last bracket (excess positive, in reach), so that [lo, s]
-    brackets a crossing when h_s <= 0."""
+    """Golden-section search for the lowest excess between a (excess h_a > 0) and b, stopping at the first
+    point where it is not positive; returns (lo, h_lo, s, h_s): that point and the left end of the search's
+    last bracket (excess positive, in reach), so that [lo, s] brackets a crossing when h_s <= 0."""
     k = 0.3819660112501051
-    tol = 1e-5 * (b - a)
-    x = wp = vp = a + k * (b - a)
-    fx, _, ok = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, x, r, R, v, w, P, defl, frc, X)
-    if ok and fx <= 0.0:
-        return a, h_a, x, fx
-    if not ok:
-        return a, h_a, x, 1.0
-    fw = fv = fx
-    d = e = 0.0
+    c, d = a + k * (b - a), b - k * (b - a)
+    hc, _, okc = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, c, r, R, v, w, P, defl, frc, X)
+    hd, _, okd = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, d, r, R, v, w, P, defl, frc, X)
     for _ in range(MAX_DIP):
-        xm = 0.5 * (a + b)
-        if abs(x - xm) <= 2.0 * tol - 0.5 * (b - a):
-            break
-        golden = True
-        if abs(e) > tol:                                        # parabola through x, w, v
-            q1 = (x - wp) * (fx - fv)
-            q = (x - vp) * (fx - fw)
-            p = (x - vp) * q - (x - wp) * q1
-            q = 2.0 * (q - q1)
-            if q > 0.0:
-                p = -p
-            q = abs(q)
-            e_old, e = e, d
-            if abs(p) < abs(0.5 * q * e_old) and q * (a - x) < p < q * (b - x):
-                d, golden = p / q, False
-                if x + d - a < 2.0 * tol or b - x - d < 2.0 * tol:
-                    d = tol if xm > x else -tol
-        if golden:
-            e = (a if x >= xm else b) - x
-            d = k * e
-        u = x + (d if abs(d) >= tol else (tol if d > 0.0 else -tol))
-        fu, _, ok = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, u, r, R, v, w, P, defl, frc, X)
-        if not ok:                                              # past the reach: shrink from the right
-            if u < x:
-                break
-            b = u
-            continue
-        if fu <= 0.0:
-            return (x, fx, u, fu) if u > x else (a, h_a, u, fu)
-        if fu <= fx:
-            if u >= x:
-                a, h_a = x, fx
-            else:
-                b = x
-            vp, fv, wp, fw, x, fx = wp, fw, x, fx, u, fu
+        if okc and hc <= 0.0:
+            return a, h_a, c, hc
+        if okd and hd <= 0.0:
+            return c, hc, d, hd
+        if not okd or hc < hd:
+            b, d, hd, okd = d, c, hc, okc
+            c = a + k * (b - a)
+            hc, _, okc = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, c, r, R, v, w, P, defl, frc, X)
         else:
-            if u < x:
-                a, h_a = u, fu
-            else:
-                b = u
-            if fu <= fw or wp == x:
-                vp, fv, wp, fw = wp, fw, u, fu
-            elif fu <= fv or vp == x or vp == wp:
-                vp, fv = u, fu
-    return a, h_a, x, fx
+            a, h_a, c, hc, okc = c, hc, d, hd, okd
+            d = b - k * (b - a)
+            hd, _, okd = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, d, r, R, v, w, P, defl, frc, X)
+    return a, h_a, c, hc if okc else 1.0
 
 
 @njit(cache=True)
@@ -220,8 +180,8 @@ def footpad_force(geo, cells, i, mem, shape, P0, sliding, hold, mu_s, mu_d, r, R
         if aimed or turned:
             # The secant promised a crossing and h came back positive, or h fell and rose again (the samples
             # bracket a minimum in (s_prev, s_hi)): a narrow dip may lie in between (a pad unloading to zero;
-            # an articulated tip crossing its peg-leg axis, where alpha passes through the seat): look for its
-            # bottom.
+            # an articulated tip crossing its peg-leg axis, where alpha passes through the seat). Golden-section
+            # search for its bottom.
             a, h_a = (s_prev, h_prev) if turned else (s_lo, h_lo)
             a, h_a, s_m, h_m = _dip(geo, cells, i, mem, shape, mu_d, P0, d0, d1, a, h_a, s_hi, r, R, v, w, P, defl,
                                     frc, X)
