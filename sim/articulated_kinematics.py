@@ -65,15 +65,28 @@ def _sin_psi(g, s3, alpha):
 
 
 @njit(cache=True)
+def residual_slope(g: ArticulatedGeometry, s0: float, s1: float, s2: float, alpha: float) -> tuple[float, float]:
+    """(F, dF/dalpha) of `residual_at` (NaN where |sin psi| > 1 or the slope is unbounded, cos psi = 0):
+    dF/da = 2 (S1 - AO - AU cos psi) AU sin psi (d sin psi/da) / cos psi - 2 r dr/da (eq. 38-40 differentiated)."""
+    sa, ca = np.sin(alpha), np.cos(alpha)
+    sp = (g.AS * sa + g.AL * ca + s2 + g.AE) / g.AU
+    if abs(sp) > 1.0:
+        return np.nan, np.nan
+    cp = np.sqrt(1.0 - sp * sp)
+    u = s0 - g.AO - g.AU * cp
+    r = g.AS * (1.0 - ca) + g.AL * sa
+    f = u * u + s1 * s1 - r * r
+    if cp == 0.0:
+        return f, np.nan
+    return f, 2.0 * u * sp * (g.AS * ca - g.AL * sa) / cp - 2.0 * r * (g.AS * sa + g.AL * ca)
+
+
+@njit(cache=True)
 def residual_at(g: ArticulatedGeometry, s0: float, s1: float, s2: float, alpha: float) -> float:
     """F(alpha) = (S1 - AO - AU cos psi)^2 + S2^2 - r(alpha)^2 for the footpad (s0, s1, s2): zero at a
     consistent alpha, NaN where the vertical equation has no psi (|sin psi| > 1). Its roots are those of the
     report's quartic eq. 41 without the extraneous ones squaring adds."""
-    sp = _sin_psi(g, s2, alpha)
-    if abs(sp) > 1.0:
-        return np.nan
-    r = tip_radius(g, alpha)
-    return (s0 - g.AO - g.AU * np.sqrt(1.0 - sp * sp)) ** 2 + s1 * s1 - r * r
+    return residual_slope(g, s0, s1, s2, alpha)[0]
 
 
 def residual(g: ArticulatedGeometry, s, alpha):
@@ -90,16 +103,20 @@ ALPHA_MAX = np.pi / 2       # eq. 42: alpha in [0, pi/2]
 def nearest_root(g: ArticulatedGeometry, s0: float, s1: float, s2: float, alpha_prev: float,
                  tol: float = 1e-13) -> float:
     """The root of F nearest alpha_prev in [0, ALPHA_MAX], or -1 if there is none (out of reach): steps
-    doubling from alpha_prev on both sides until F changes sign (the nearer crossing wins), then Illinois
-    false position. The simulator's SINALP: it follows one branch through a crossing of the quartic's roots,
-    since F has no extraneous roots; a double root (two roots meeting and vanishing) is not found."""
+    doubling from alpha_prev on both sides until F changes sign (the nearer crossing wins; the first step is
+    twice the Newton distance from alpha_prev, at most 1e-3 rad), then Newton's method kept inside the bracket
+    (rtsafe, Press et al., Numerical Recipes 3rd ed. sec. 9.4). The simulator's SINALP: it follows one branch
+    through a crossing of the quartic's roots, since F has no extraneous roots; a double root (two roots
+    meeting and vanishing) is not found."""
     a0 = min(max(alpha_prev, 0.0), ALPHA_MAX)
-    f0 = residual_at(g, s0, s1, s2, a0)
+    f0, d0 = residual_slope(g, s0, s1, s2, a0)
     if f0 == 0.0:
         return a0
     up_a, up_f, dn_a, dn_f = a0, f0, a0, f0
     up, dn = a0 < ALPHA_MAX, a0 > 0.0
     step = 1e-3
+    if np.isfinite(d0) and d0 != 0.0:
+        step = min(step, max(2.0 * abs(f0 / d0), 1e3 * tol))
     lo = hi = -1.0
     f_lo = f_hi = 0.0
     for _ in range(64):
@@ -133,27 +150,32 @@ def nearest_root(g: ArticulatedGeometry, s0: float, s1: float, s2: float, alpha_
         step *= 2.0
     if lo < 0.0:
         return -1.0
-    side = 0
+    if f_lo == 0.0:
+        return lo
+    if f_hi == 0.0:
+        return hi
+    neg, pos = (lo, hi) if f_lo < 0.0 else (hi, lo)              # F(neg) < 0 < F(pos)
+    x = hi - f_hi * (hi - lo) / (f_hi - f_lo)
+    dx = dx_old = hi - lo
+    f, df = residual_slope(g, s0, s1, s2, x)
     for _ in range(100):
-        if f_lo == 0.0:
-            return lo
-        if f_hi == 0.0 or hi - lo <= tol:
-            return hi
-        m = hi - f_hi * (hi - lo) / (f_hi - f_lo)
-        if not (lo < m < hi):
-            m = 0.5 * (lo + hi)
-        fm = residual_at(g, s0, s1, s2, m)
-        if fm * f_lo > 0.0:
-            lo, f_lo = m, fm
-            if side == 1:
-                f_hi *= 0.5
-            side = 1
+        if not (np.isfinite(f) and np.isfinite(df)) or ((x - pos) * df - f) * ((x - neg) * df - f) > 0.0 \
+                or abs(2.0 * f) > abs(dx_old * df):
+            dx_old, dx = dx, 0.5 * (pos - neg)                  # Newton leaves the bracket or is slow: bisect
+            x = neg + dx
         else:
-            hi, f_hi = m, fm
-            if side == -1:
-                f_lo *= 0.5
-            side = -1
-    return 0.5 * (lo + hi)
+            dx_old, dx = dx, f / df
+            x -= dx
+        if abs(dx) <= tol:
+            return x
+        f, df = residual_slope(g, s0, s1, s2, x)
+        if f < 0.0:
+            neg = x
+        elif f > 0.0:
+            pos = x
+        elif f == 0.0:
+            return x
+    return x
 
 
 class Unreachable(ValueError):

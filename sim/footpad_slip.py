@@ -20,7 +20,7 @@ the search always brackets: the footpad moves from the held position with growin
 FE12 <= mu_D FE3 or it leaves the leg's reach (the main cell, telescoping axial or articulated upper, short of
 its permanent set, or no articulated root: the leg would have lifted off; every direction in the plane leaves
 the reach within two leg lengths), where it counts as infeasible. Bisection while one end is out of reach,
-then false position with the Illinois modification, closes on the crossing; the answer is always a contact
+then Brent's method, closes on the crossing; the answer is always a contact
 point within reach on the friction-feasible side, or the edge of the reach (the lift-off event then takes
 over).
 """
@@ -58,27 +58,87 @@ def _at(geo, cells, i, mem, shape, mu, P0, d0, d1, s, r, R, v, w, P, defl, frc, 
 
 
 @njit(cache=True)
-def _dip(geo, cells, i, mem, shape, mu, P0, d0, d1, a, b, r, R, v, w, P, defl, frc, X):
-    """Golden-section search for the lowest excess between a and b, stopping at the first point where it is
-    not positive; returns (s, excess)."""
+def _dip(geo, cells, i, mem, shape, mu, P0, d0, d1, a, h_a, b, r, R, v, w, P, defl, frc, X):
+    """Golden-section search for the lowest excess between a (excess h_a > 0) and b, stopping at the first
+    point where it is not positive; returns (lo, h_lo, s, h_s): that point and the left end of the search's
+    last bracket (excess positive, in reach), so that [lo, s] brackets a crossing when h_s <= 0."""
     k = 0.3819660112501051
     c, d = a + k * (b - a), b - k * (b - a)
     hc, _, okc = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, c, r, R, v, w, P, defl, frc, X)
     hd, _, okd = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, d, r, R, v, w, P, defl, frc, X)
     for _ in range(MAX_DIP):
         if okc and hc <= 0.0:
-            return c, hc
+            return a, h_a, c, hc
         if okd and hd <= 0.0:
-            return d, hd
+            return c, hc, d, hd
         if not okd or hc < hd:
             b, d, hd, okd = d, c, hc, okc
             c = a + k * (b - a)
             hc, _, okc = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, c, r, R, v, w, P, defl, frc, X)
         else:
-            a, c, hc, okc = c, d, hd, okd
+            a, h_a, c, hc, okc = c, hc, d, hd, okd
             d = b - k * (b - a)
             hd, _, okd = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, d, r, R, v, w, P, defl, frc, X)
-    return c, hc if okc else 1.0
+    return a, h_a, c, hc if okc else 1.0
+
+
+@njit(cache=True)
+def _refine(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_lo, h_lo, s_hi, h_hi, ok_hi, r, R, v, w, P, defl, frc, X,
+            tol: float) -> tuple[float, bool]:
+    """Close the bracket [s_lo, s_hi] (excess h_lo > 0; h_hi <= 0, or s_hi out of reach) to tol of the reach, or
+    until the excess is within tol of the force scale: bisection while the far end is out of reach, then
+    Brent's method (Brent 1973, ch. 4: inverse quadratic interpolation, secant or bisection; steps of at least
+    the tolerance, so the bracket closes). Returns (s, ok): the crossing on its friction-feasible side, or the
+    edge of the reach (ok False) when no crossing is in reach."""
+    xtol = tol * geo[2][i]
+    while not ok_hi and s_hi - s_lo > xtol:
+        s_m = 0.5 * (s_lo + s_hi)
+        h_m, _, ok_m = _at(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_m, r, R, v, w, P, defl, frc, X)
+        if ok_m and h_m > 0.0:
+            s_lo, h_lo = s_m, h_m
+        elif ok_m:
+            s_hi, h_hi, ok_hi = s_m, h_m, True
+        else:
+            s_hi = s_m
+    if not ok_hi:
+        return s_lo, False
+    a, fa, b, fb, ok_b = s_lo, h_lo, s_hi, h_hi, True
+    c, fc, ok_c = a, fa, True
+    e = d = b - a
+    for _ in range(MAX_REFINE):
+        if fb * fc > 0.0:
+            c, fc, ok_c = a, fa, True
+            e = d = b - a
+        if abs(fc) < abs(fb):
+            a, fa, b, fb, c, fc, ok_b, ok_c = b, fb, c, fc, b, fb, ok_c, ok_b
+        xm = 0.5 * (c - b)
+        if abs(xm) <= xtol or fb == 0.0:
+            break
+        if abs(e) >= xtol and abs(fa) > abs(fb):
+            sr = fb / fa
+            if a == c:
+                p, q = 2.0 * xm * sr, 1.0 - sr
+            else:
+                q, rr = fa / fc, fb / fc
+                p = sr * (2.0 * xm * q * (q - rr) - (b - a) * (rr - 1.0))
+                q = (q - 1.0) * (rr - 1.0) * (sr - 1.0)
+            if p > 0.0:
+                q = -q
+            p = abs(p)
+            if 2.0 * p < min(3.0 * xm * q - abs(xtol * q), abs(e * q)):
+                e, d = d, p / q
+            else:
+                d = e = xm
+        else:
+            d = e = xm
+        a, fa = b, fb
+        b += d if abs(d) > xtol else (xtol if xm > 0.0 else -xtol)
+        fb, scale, ok_b = _at(geo, cells, i, mem, shape, mu_d, P0, d0, d1, b, r, R, v, w, P, defl, frc, X)
+        if ok_b and abs(fb) <= tol * (scale + 1.0):
+            return b, True
+    if ok_b and fb <= 0.0:
+        return b, True
+    return c, ok_c
 
 
 @njit(cache=True)
@@ -116,41 +176,22 @@ def footpad_force(geo, cells, i, mem, shape, P0, sliding, hold, mu_s, mu_d, r, R
         h_hi, _, ok_hi = _at(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_hi, r, R, v, w, P, defl, frc, X)
         if h_hi <= 0.0:
             break
-        if aimed:
-            # The secant promised a crossing and h came back positive: a narrow dip (a pad unloading to zero
-            # turns h back up) may lie in between. Golden-section search for its bottom.
-            s_m, h_m = _dip(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_lo, s_hi, r, R, v, w, P, defl, frc, X)
+        turned = h_lo < h_prev and h_hi > h_lo
+        if aimed or turned:
+            # The secant promised a crossing and h came back positive, or h fell and rose again (the samples
+            # bracket a minimum in (s_prev, s_hi)): a narrow dip may lie in between (a pad unloading to zero;
+            # an articulated tip crossing its peg-leg axis, where alpha passes through the seat). Golden-section
+            # search for its bottom.
+            a, h_a = (s_prev, h_prev) if turned else (s_lo, h_lo)
+            a, h_a, s_m, h_m = _dip(geo, cells, i, mem, shape, mu_d, P0, d0, d1, a, h_a, s_hi, r, R, v, w, P, defl,
+                                    frc, X)
             if h_m <= 0.0:
-                s_hi, h_hi, ok_hi = s_m, h_m, True
+                s_lo, h_lo, s_hi, h_hi, ok_hi = a, h_a, s_m, h_m, True
                 break
         s_prev, h_prev, s_lo, h_lo = s_lo, h_lo, s_hi, h_hi
         step = 4.0 * (s_lo - s_prev)
-    # Refine: bisection while the far end is out of reach, then Illinois false position.
-    side = 0
-    for _ in range(MAX_REFINE):
-        if s_hi - s_lo <= tol * reach:
-            break
-        if ok_hi:
-            s_m = s_hi - h_hi * (s_hi - s_lo) / (h_hi - h_lo)
-            if not (s_lo < s_m < s_hi):
-                s_m = 0.5 * (s_lo + s_hi)
-        else:
-            s_m = 0.5 * (s_lo + s_hi)
-        h_m, scale_m, ok_m = _at(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_m, r, R, v, w, P, defl, frc, X)
-        if ok_m and abs(h_m) <= tol * (scale_m + 1.0):
-            s_lo, s_hi, ok_hi = s_m, s_m, True
-            break
-        if h_m > 0.0:
-            s_lo, h_lo = s_m, h_m
-            if side == 1 and ok_hi:
-                h_hi *= 0.5
-            side = 1
-        else:
-            s_hi, h_hi, ok_hi = s_m, h_m, ok_m
-            if side == -1:
-                h_lo *= 0.5
-            side = -1
-    s_end = s_hi if ok_hi else s_lo
+    s_end, ok_hi = _refine(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_lo, h_lo, s_hi, h_hi, ok_hi, r, R, v, w, P,
+                           defl, frc, X, tol)
     P[0], P[1], P[2] = P0[0] + s_end * d0, P0[1] + s_end * d1, 0.0
     fe12, fe3, _, _, power, alpha, beta, psi = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, X)
     deficit = 0.0 if ok_hi else max(fe12 - mu_d * max(fe3, 0.0), 0.0) / cells[3][i, 0]

@@ -5,9 +5,9 @@ the capsule). Dormand-Prince 5(4) with error control (or fixed steps) advances i
 arrays the caller owns and changes only when a step is accepted (`_commit`): cell maxima, footpad positions
 and slip state, contact flags. Touchdown, lift-off and stick-to-slip are located to `event_tol` seconds:
 first on the step's continuous extension (leg evaluations only), then by real trial steps aimed just short of
-the crossing, the step accepted before it. When no leg touches an axisymmetric capsule a step is the
-closed-form free flight (eq. 62-88) instead. The loop returns to the caller on a status: the end time, a full history
-buffer, or an outcome it detects (bottoming, tip angle, body contact, quiescence, the energy criterion).
+the crossing, the step accepted before it; a trial step that fails the error test rejects the step. When no
+leg touches an axisymmetric capsule a step is the closed-form free flight (eq. 62-88) instead. The loop returns
+to the caller on a status: the end time, a full history buffer, or an outcome it detects (bottoming, tip angle, body contact, quiescence, the energy criterion).
 """
 
 from __future__ import annotations
@@ -267,6 +267,22 @@ def _monitor(geo, mass, inertia, gravity, bottoming, up, body, order, mem, conta
 
 
 @njit(cache=True)
+def _error_norm(y, y1, err, ctl):
+    """RMS of the step's error estimate over atol + rtol max(|y|, |y1|) (Hairer, Norsett and Wanner, Solving ODEs I,
+    eq. II.4.11); NaN stays NaN."""
+    e = 0.0
+    for c in range(NY):
+        e += (err[c] / (ctl[C_ATOL] + ctl[C_RTOL] * max(abs(y[c]), abs(y1[c])))) ** 2
+    return np.sqrt(e / NY)
+
+
+@njit(cache=True)
+def _shrink(e):
+    """Step factor after a rejection with error norm e (0.2 when e is not finite)."""
+    return max(0.2, 0.9 * e ** -0.2) if np.isfinite(e) else 0.2
+
+
+@njit(cache=True)
 def _dense(y0, y1, K, h, theta, out):
     """Dormand-Prince's continuous extension of a step at fraction theta (fourth order; the event search's
     guide): the cubic Hermite of (y0, f0, y1, f1) plus theta^2 (1 - theta)^2 h sum(d_i k_i) (Hairer, Norsett
@@ -367,18 +383,10 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
         _stage(*args, y, h, K, y1, err, work, flight)
         cnt[K_RHS] += 6
         if not (fixed or flight):
-            e = 0.0
-            for c in range(NY):
-                sc = ctl[C_ATOL] + ctl[C_RTOL] * max(abs(y[c]), abs(y1[c]))
-                e += (err[c] / sc) ** 2
-            e = np.sqrt(e / NY)
-            if not np.isfinite(e):
+            e = _error_norm(y, y1, err, ctl)
+            if not e <= 1.0:
                 cnt[K_REJECTED] += 1
-                h *= 0.2
-                continue
-            if e > 1.0:
-                cnt[K_REJECTED] += 1
-                h *= max(0.2, 0.9 * e ** -0.2)
+                h *= _shrink(e)
                 continue
         _events(cells, geo, mu, mem, contact, sliding, shape, armed, y1, dt, mt, g1, False)
         j = _first(g_prev, g1)
@@ -391,12 +399,14 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
             # then saw the forces before it, also where the crossing is a jump (a slide leaving its reach). The
             # search ends when the bracket or the secant's distance from its lower end is within event_tol,
             # or when the function there is within its tolerance of zero (a footpad slid to the edge of its
-            # reach sits at zero until it lifts off: no secant can place that crossing).
+            # reach sits at zero until it lifts off: no secant can place that crossing). Each trial step passes
+            # the error test too, or the step is rejected: a shorter step can meet a jump the full one missed
+            # (a slip search that misses the dip near the peg-leg axis and slides far).
             cnt[K_EVENTS] += 1
             tol = ctl[C_EVENTTOL]
             est, slope, j = _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, y1, K, h, j,
                                    g_prev, g1, 0.1 * tol, yt, gm, ga, gb, work)
-            lo, hi, side, mid, a_hi, newton = 0.0, h, 0, -1.0, g1[j], 0
+            lo, hi, side, mid, a_hi, newton, e_trial = 0.0, h, 0, -1.0, g1[j], 0, 0.0
             g_lo[:] = g_prev
             f_lo, f_hi = g_prev[j], g1[j]
             while hi - lo > tol:
@@ -413,6 +423,10 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                 _stage(*args, y, mid, K, y1, err, work, flight)
                 cnt[K_RHS] += 6
                 cnt[K_TRIALS] += 1
+                if not (fixed or flight):
+                    e_trial = _error_norm(y, y1, err, ctl)
+                    if not e_trial <= 1.0:                 # the trial step itself fails the error test
+                        break
                 _events(cells, geo, mu, mem, contact, sliding, shape, armed, y1, dt, mt, g1, False)
                 k = _first(g_prev, g1)
                 newton += 1
@@ -433,6 +447,10 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                     if side == 1:
                         f_hi *= 0.5
                     side = 1
+            if not e_trial <= 1.0:
+                cnt[K_REJECTED] += 1
+                h = mid * _shrink(e_trial)
+                continue
             forced, h_acc = j, lo
             if lo == 0.0:                              # the crossing is within event_tol of the start
                 y1[:] = y
