@@ -166,19 +166,27 @@ def _dask(tasks: list[dict], workers: int, scheduler: str | None) -> Iterator[di
                          "(pip install 'alightsize[dask]')", "it is not installed") from None
     cluster = None if scheduler else LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
                                                   dashboard_address=None)
-    with Client(scheduler or cluster) as client:
-        futures = client.map(execute, tasks, pure=False, key=[f"run-{t['run_id']}" for t in tasks])
+    try:
         try:
-            for f in as_completed(futures):
-                try:
-                    yield f.result()
-                except Exception as exc:               # noqa: BLE001 - e.g. KilledWorker: stored, study goes on
-                    t = tasks[futures.index(f)]
-                    yield {**_died(t), "message": f"{type(exc).__name__}: {exc}"}
-        finally:
-            client.cancel(futures)
-    if cluster is not None:
-        cluster.close()
+            client = Client(scheduler or cluster, timeout="20s")
+        except (OSError, TimeoutError) as exc:
+            raise InputError("(command line)", "--scheduler", "the address of a running Dask scheduler",
+                             f"{scheduler!r} ({exc})") from None
+        with client:
+            keys = [f"run-{t['run_id']}" for t in tasks]
+            by_key = dict(zip(keys, tasks))
+            futures = client.map(execute, tasks, pure=False, key=keys)
+            try:
+                for f in as_completed(futures):
+                    try:
+                        yield f.result()
+                    except Exception as exc:           # noqa: BLE001 - e.g. KilledWorker: stored, study goes on
+                        yield {**_died(by_key[f.key]), "message": f"{type(exc).__name__}: {exc}"}
+            finally:
+                client.cancel(futures)
+    finally:
+        if cluster is not None:
+            cluster.close()
 
 
 def _progress(total: int, quiet: bool):
