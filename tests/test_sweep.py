@@ -228,3 +228,17 @@ def test_study_input_errors_exit_2(tmp_path, capsys):
     with pytest.raises(InputError) as e:
         read_study(tmp_path / "b.toml")
     assert "dispersions.initial.velocity[1].dist" in str(e.value) and "lognormal" in str(e.value)
+
+
+def test_history_per_run_on_request(tmp_path):
+    """`history = true` keeps each run's history Parquet beside the store; its last time is the run's end."""
+    import pandas as pd
+    path = _study(tmp_path, samples=1)
+    path.write_text(path.read_text().replace("samples = 1\n", "samples = 1\nhistory = true\n"))
+    study = read_study(path)
+    run_sweep(study, tmp_path / "o", "serial", quiet=True)
+    rows = sqlite3.connect(tmp_path / "o" / "runs.sqlite").execute("SELECT history_file, t_end_s FROM runs").fetchall()
+    assert len(rows) == 2
+    for rel, t_end in rows:
+        h = pd.read_parquet(tmp_path / "o" / rel)
+        assert h["t_s"].iloc[-1] == pytest.approx(t_end, abs=1e-12)
