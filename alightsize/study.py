@@ -225,11 +225,18 @@ def read_study(path: str | Path) -> Study:
     return Study(path, name, title, runs, criteria, rows, column, history, seed, plot)
 
 
+@lru_cache(maxsize=64)
+def _scene_data(path: Path, mtime_ns: int) -> Node:
+    """The merged scene TOML of a base scene, read once per version of the file (callers copy before changing
+    it; a changed base of the scene is not seen until the scene file itself changes within one process)."""
+    return load_scene_toml(path)
+
+
 def scene_hash(run: Run) -> str:
     """SHA-256 of the run's inputs: the merged scene TOML with the overrides applied, and the version."""
-    root = load_scene_toml(run.scene)
+    root = _scene_data(run.scene, run.scene.stat().st_mtime_ns)
     data = copy.deepcopy(root.data)
-    node = type(root)(root.file, "", data)
+    node = Node(root.file, "", data)
     for k, v in run.overrides.items():
         node.set_path(k, v)
     text = json.dumps({"scene": data, "version": __version__}, sort_keys=True, default=str)
