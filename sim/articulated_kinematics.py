@@ -68,13 +68,13 @@ def _sin_psi(g, s3, alpha):
 def residual_slope(g: ArticulatedGeometry, s0: float, s1: float, s2: float, alpha: float) -> tuple[float, float]:
     """(F, dF/dalpha) of `residual_at` (NaN where |sin psi| > 1 or the slope is unbounded, cos psi = 0):
     dF/da = 2 (S1 - AO - AU cos psi) AU sin psi (d sin psi/da) / cos psi - 2 r dr/da (eq. 38-40 differentiated)."""
-    sa, ca = np.sin(alpha), np.cos(alpha)
-    sp = (g.AS * sa + g.AL * ca + s2 + g.AE) / g.AU
+    sp = _sin_psi(g, s2, alpha)
     if abs(sp) > 1.0:
         return np.nan, np.nan
+    sa, ca = np.sin(alpha), np.cos(alpha)
     cp = np.sqrt(1.0 - sp * sp)
     u = s0 - g.AO - g.AU * cp
-    r = g.AS * (1.0 - ca) + g.AL * sa
+    r = tip_radius(g, alpha)
     f = u * u + s1 * s1 - r * r
     if cp == 0.0:
         return f, np.nan
