@@ -63,15 +63,20 @@ def _figures(s: dict) -> dict:
     return row
 
 
+def _inputs(task: dict) -> dict:
+    """The columns a run's row has whatever becomes of it: id, scene, inputs hash, parameters."""
+    return {"run_id": task["run_id"], "scene": task["scene_key"], "scene_hash": task["scene_hash"],
+            **parameter_columns(task["overrides"]), "params_json": json.dumps(task["params"], default=str),
+            "reference_class": task["reference"]}
+
+
 def execute(task: dict) -> dict:
     """One run: read its scene, land it, summarize. Any exception becomes a `failed` row with its message."""
     from sim.landing import simulate
     from .atomic import write_atomic
     from .landing_output import history_frame, summary
     from .scene_config import read_scene
-    row = {"run_id": task["run_id"], "scene": task["scene_key"], "scene_hash": task["scene_hash"],
-           **parameter_columns(task["overrides"]), "params_json": json.dumps(task["params"], default=str),
-           "reference_class": task["reference"], "worker": f"{os.uname().nodename}:{os.getpid()}"}
+    row = {**_inputs(task), "worker": f"{os.uname().nodename}:{os.getpid()}"}
     t0 = time.perf_counter()
     try:
         cfg = read_scene(task["scene"], task["overrides"])
@@ -89,7 +94,7 @@ def execute(task: dict) -> dict:
         if task["history"]:
             frame = history_frame(cfg, res)
             write_atomic(task["history"], lambda p: frame.to_parquet(p, index=False))
-            row["history_file"] = os.path.relpath(task["history"], Path(task["history"]).parent.parent)
+            row["history_file"] = f"history/{Path(task['history']).name}"
         row["status"], row["message"] = "done", ""
     except InputError as exc:
         row.update(status="failed", outcome=None, message=f"bad input: {exc}")
@@ -112,10 +117,9 @@ def _pool_context() -> multiprocessing.context.BaseContext:
 
 
 def _died(task: dict) -> dict:
-    return {"run_id": task["run_id"], "scene": task["scene_key"], "scene_hash": task["scene_hash"],
-            **parameter_columns(task["overrides"]), "params_json": json.dumps(task["params"], default=str),
-            "status": "failed", "outcome": None, "message": "the worker process died while running it (twice)",
-            "wall_s": 0.0, "worker": "", "finished_at": time.time()}
+    return {**_inputs(task), "status": "failed", "outcome": None,
+            "message": "the worker process died while running it (twice)", "wall_s": 0.0, "worker": "",
+            "finished_at": time.time()}
 
 
 def _ignore_sigint() -> None:
