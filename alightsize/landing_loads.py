@@ -82,6 +82,8 @@ def run_landings(node: Node, design: Path, loads: LoadsResult | None, out: Path 
         if n not in loads.envelopes:
             raise node.error("envelopes", "names of envelopes of the [loads] file (" + ", ".join(loads.envelopes) + ")",
                              repr(n))
+    if not path.is_file():
+        raise node.error("study", "the path of a study TOML (relative to the design config)", f"{str(path)!r}: no such file")
     study = read_study(path)
     with tempfile.TemporaryDirectory() as tmp:
         folder = out or Path(tmp)
@@ -89,10 +91,10 @@ def run_landings(node: Node, design: Path, loads: LoadsResult | None, out: Path 
         store = RunStore(folder / "runs.sqlite")
         rows = tuple(store.rows([r.run_id for r in study.runs]))
         store.close()
-    failed = [r["run_id"] for r in rows if r["status"] != "done"]
+    failed = [r for r in rows if r["status"] != "done"]
     if failed:
-        raise node.error("study", "landing cases that all run", f"runs {', '.join(failed)} failed: "
-                         + rows[[r['run_id'] for r in rows].index(failed[0])]["message"])
+        raise node.error("study", "landing cases that all run", f"runs {', '.join(r['run_id'] for r in failed)} "
+                         f"failed: {failed[0]['message']}")
     return merge(loads, rows, names), Landings(study, names, rows, loads)
 
 

@@ -186,6 +186,9 @@ def read_study(path: str | Path) -> Study:
         points = _grid_points(grid, scenes)
     else:
         points = [("" if len(scenes) == 1 else k, k, {}, {"scene": k}, None) for k in scenes]
+    if not points:
+        raise root.error("runs" if runs_node else "scenes", "at least one run (a scene, a grid point or a table row)",
+                         "none")
     if compare:
         compare.finish()
     disp_node = root.table("dispersions", optional=True)
@@ -196,6 +199,9 @@ def read_study(path: str | Path) -> Study:
     if dispersions and not head.has("samples"):
         raise head.error("samples", "the number of Monte Carlo samples (an integer >= 1)", "nothing")
     samples = head.integer("samples", 1)
+    if samples > 1 and not dispersions:
+        raise head.error("samples", "samples only with [dispersions] (without them every sample is the same run)",
+                         str(samples))
     if len(points) * samples > MAX_RUNS:
         raise head.error("samples", f"at most {MAX_RUNS:,} runs in all", f"{len(points) * samples:,}")
     head.finish()
