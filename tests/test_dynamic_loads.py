@@ -113,11 +113,6 @@ def test_envelope_is_the_extreme_of_the_history(landing):
             j = int(np.searchsorted(h.steps, k))
             assert np.degrees([h.alpha[j], h.beta[j], h.psi[j]]) == pytest.approx(
                 [at["alpha_deg"], at["beta_deg"], at["psi_deg"]], rel=1e-15)
-    pu1 = next(e for e in env if e["member"] == "PU1")
-    # Regression figure: configuration 5's default landing (run 50200) peaks at -143,558 N in PU1 (leg 1,
-    # t = 0.0996 s, psi 34.7 deg); the quasi-static envelope of configuration 5 gives -143,881 N.
-    assert pu1["compression_N"] == pytest.approx(-143558.0, rel=2e-3)
-    assert pu1["compression_at"]["leg"] == 1
 
 
 def test_telescoping_legs_are_refused(landing):
