@@ -25,7 +25,7 @@ import numpy as np  # noqa: E402
 
 from sim.landing import Result, simulate  # noqa: E402
 
-from . import __version__, drop_tables  # noqa: E402
+from . import __version__, drop_tables, units  # noqa: E402
 from .atomic import write_atomic  # noqa: E402
 from .landing_output import body_histories, summary  # noqa: E402
 from .report import template_env  # noqa: E402
@@ -37,8 +37,8 @@ ROOT = Path(__file__).resolve().parents[1]                  # the source checkou
 DROPS_DIR = ROOT / "examples" / "affdl-tr-66-33" / "drops"
 DROP_NUMBERS = (1, 2, 3, 4, 5, 6, 8, 9, 10, 11)              # AFFDL-TR-66-33 Table 5 (drop 7 deleted, l. 2279)
 SOURCES = ("simulated", "analytical", "experimental")
-FT = 0.3048                                                  # m per ft (international foot, exact)
-FT_LB = FT * 4.4482216152605                                 # J per ft-lbf (lbf = 0.45359237 kg x 9.80665 m/s^2)
+FT = units.parse("1 ft", "length")                           # m per ft
+FT_LB = units.parse("1 ft*lbf", "energy")                    # J per ft-lbf
 SRS_FREQUENCIES = default_frequencies(1.0, 1000.0)           # Hz, as `alightsize simulate`'s srs_xdd3.png
 # AFFDL-TR-66-33 List of Figures (l. 205-292): drop -> (figure of XDD(1), the six run on to OMD(3); shock spectra)
 FIGURES = {1: (33, 39), 2: (40, 46), 3: (47, 53), 4: (54, 60), 5: (61, None), 6: (67, 73), 8: (74, 80),
