@@ -126,7 +126,8 @@ class _Run:
         for i, leg in enumerate(scene.legs):
             for j, cell in enumerate(leg.cells):
                 self.bottoming[i, j] = cell.curve.bottoming
-        self.mu = np.array([scene.mu_static, scene.mu_dynamic])
+        # The slide's tolerance follows the integration's: 1e-3 rtol, within 1e-13..1e-8 (docs/simulator.md).
+        self.mu = np.array([scene.mu_static, scene.mu_dynamic, min(max(1e-3 * ctl.rtol, 1e-13), 1e-8)])
         self.mem = np.zeros((n, C, 2))
         self.contact = np.zeros(n, np.int64)
         self.P = np.zeros((n, 3))
@@ -146,13 +147,13 @@ class _Run:
                                  -1.0 if ctl.energy_check_from is None else ctl.energy_check_from])
         attach = np.array([leg.attach for leg in scene.legs])
         self.order = np.argsort(np.arctan2(attach[:, 1], attach[:, 0])).astype(np.int64)
-        self._grow(4096)
+        self._grow(1024)
 
     def _grow(self, size: int):
         n, C = self.n, self.C
-        new = dict(H_t=np.zeros(size), H_y=np.zeros((size, 14)), H_dy=np.zeros((size, 14)),
-                   H_d=np.full((size, n, C), np.nan), H_f=np.zeros((size, n, C)), H_X=np.zeros((size, n, 3)),
-                   H_P=np.zeros((size, n, 3)), H_c=np.zeros((size, n), np.int64))
+        new = dict(H_t=np.empty(size), H_y=np.empty((size, 14)), H_dy=np.empty((size, 14)),   # rows written as
+                   H_d=np.empty((size, n, C)), H_f=np.empty((size, n, C)), H_X=np.empty((size, n, 3)),  # recorded
+                   H_P=np.empty((size, n, 3)), H_c=np.empty((size, n), np.int64))
         k = int(self.cnt[lk.K_HIST])
         for name, arr in new.items():
             if k:

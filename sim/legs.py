@@ -54,7 +54,7 @@ def initial_shape(legs) -> np.ndarray:
     return np.array([[0.0, 0.0, leg.psi0 if isinstance(leg, ArticulatedLeg) else 0.0] for leg in legs])
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, X):
     """Forces of leg i with its footpad held at P (see the kind's module); returns (cells' power, alpha, beta,
     psi)."""
@@ -64,7 +64,7 @@ def leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, X):
     return power, alpha, beta, 0.0
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def main_set(cells, i, mem):
     """Permanent set of the leg's main cell (m): short of it the leg is slack and lifts off."""
     return crush_cell.permanent_set(cells[3][i, 0], mem[0, 0], mem[0, 1])

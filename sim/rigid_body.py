@@ -13,14 +13,15 @@ import numpy as np
 from numba import njit
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def quat_matrix(q: np.ndarray) -> np.ndarray:
-    """Rotation matrix of a unit quaternion (body -> terrain)."""
+    """Rotation matrix (body -> terrain) of the quaternion q, normalized here (any nonzero length)."""
     w, x, y, z = q[0], q[1], q[2], q[3]
+    k = 2.0 / (w * w + x * x + y * y + z * z)
     m = np.empty((3, 3))
-    m[0, 0], m[0, 1], m[0, 2] = 1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)
-    m[1, 0], m[1, 1], m[1, 2] = 2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)
-    m[2, 0], m[2, 1], m[2, 2] = 2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)
+    m[0, 0], m[0, 1], m[0, 2] = 1 - k * (y * y + z * z), k * (x * y - w * z), k * (x * z + w * y)
+    m[1, 0], m[1, 1], m[1, 2] = k * (x * y + w * z), 1 - k * (x * x + z * z), k * (y * z - w * x)
+    m[2, 0], m[2, 1], m[2, 2] = k * (x * z - w * y), k * (y * z + w * x), 1 - k * (x * x + y * y)
     return m
 
 
@@ -44,14 +45,14 @@ def matrix_quat(m: np.ndarray) -> np.ndarray:
     return q if q[0] >= 0 else -q
 
 
-@njit(cache=True)
-def quat_rate(q: np.ndarray, omega: np.ndarray) -> np.ndarray:
-    """dq/dt = q (x) (0, omega) / 2 with omega in body axes."""
-    w, x, y, z = q[0], q[1], q[2], q[3]
+@njit(cache=True, inline="always")
+def quat_rate(q: np.ndarray, omega: np.ndarray, out: np.ndarray) -> np.ndarray:
+    """dq/dt = q (x) (0, omega) / 2 of the unit quaternion along q, omega in body axes, written to out."""
+    n = 0.5 / np.sqrt(q[0] ** 2 + q[1] ** 2 + q[2] ** 2 + q[3] ** 2)
+    w, x, y, z = n * q[0], n * q[1], n * q[2], n * q[3]
     p, r, s = omega[0], omega[1], omega[2]
-    out = np.empty(4)
-    out[0], out[1] = 0.5 * (-x * p - y * r - z * s), 0.5 * (w * p + y * s - z * r)
-    out[2], out[3] = 0.5 * (w * r + z * p - x * s), 0.5 * (w * s + x * r - y * p)
+    out[0], out[1] = -x * p - y * r - z * s, w * p + y * s - z * r
+    out[2], out[3] = w * r + z * p - x * s, w * s + x * r - y * p
     return out
 
 

@@ -56,7 +56,7 @@ def leg_frame(alpha, beta):
     return (sa * cb, sa * sb, -ca), (ca * cb, ca * sb, sa), (-sb, cb, 0.0)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def cell_force(cells, i, j, mem, delta, rate):
     """Force of cell j of leg i at deflection delta and rate, given its committed memory."""
     cd, cf, cn, ck, cc, cy = cells
@@ -65,7 +65,7 @@ def cell_force(cells, i, j, mem, delta, rate):
                             delta, rate)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def leg_force(geo, cells, i, mem, P, r, R, v, w, defl, frc, X):
     """Forces of leg i with its footpad held at P (terrain axes) under a capsule at r, attitude R (principal ->
     terrain), velocity v (terrain), rate w (principal). Writes the deflections, cell forces and the force X on

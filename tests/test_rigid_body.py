@@ -29,7 +29,7 @@ def test_roll_yaw_pitch_321():
 
 def _integrate(q0, w0, t):
     def rhs(_, y):
-        return np.concatenate([quat_rate(y[:4], y[4:]), euler_rates(INERTIA, y[4:], np.zeros(3))])
+        return np.concatenate([quat_rate(y[:4], y[4:], np.empty(4)), euler_rates(INERTIA, y[4:], np.zeros(3))])
     sol = solve_ivp(rhs, (0, t), np.concatenate([q0, w0]), method="DOP853", rtol=1e-13, atol=1e-14)
     return sol.y[:4, -1], sol.y[4:, -1]
 
