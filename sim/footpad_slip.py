@@ -23,6 +23,10 @@ the reach within two leg lengths), where it counts as infeasible. Bisection whil
 then Brent's method, closes on the crossing; the answer is always a contact
 point within reach on the friction-feasible side, or the edge of the reach (the lift-off event then takes
 over).
+
+The slide is a straight line from where the footpad was at the last accepted step, so the footpad's path
+is a polygon with a corner at every step; the step loop bounds the error that leaves (the path error
+footpad_force returns) like the error of any other position.
 """
 
 from __future__ import annotations
@@ -39,7 +43,7 @@ MAX_DIP = 24         # golden-section steps: the dip is found to 1e-5 of the int
 FLOOR = 1e-6        # N: in-plane force below this never starts a slide (round-off at zero load)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, X):
     """(FE12, FE3, FE1, FE2, cells' power, alpha, beta, psi) with the footpad at P."""
     power, alpha, beta, psi = leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, X)
@@ -141,23 +145,32 @@ def _refine(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_lo, h_lo, s_hi, h_hi,
     return c, ok_c
 
 
-@njit(cache=True)
-def footpad_force(geo, cells, i, mem, shape, P0, sliding, hold, mu_s, mu_d, r, R, v, w, P, defl, frc, X, tol=1e-12):
-    """Footpad position P and the leg's forces (written to defl, frc, X) with friction; returns
-    (sliding 0/1, cells' power, alpha, beta, psi, static margin mu_S FE3 + FLOOR - FE12 at P0, reach deficit). P0 is the
+@njit(cache=True, inline="always")
+def footpad_force(geo, cells, i, mem, shape, P0, sliding, hold, mu_s, mu_d, r, R, v, w, P, defl, frc, X, tol):
+    """Footpad position P and the leg's forces (written to defl, frc, X) with friction, the slide closed to tol
+    (relative); returns (sliding 0/1, cells' power, alpha, beta, psi, static margin mu_S FE3 + FLOOR - FE12 at P0,
+    reach deficit, path error). P0 is the
     footpad at the last accepted step; with `hold` a sticking footpad stays at P0 whatever the margin. The
     reach deficit (m) is 0 unless the slide ended at the edge of the leg's reach with friction still
     exceeded: then it is the excess there over the main cell's unloading rate, so that its compression less
     the deficit falls through zero continuously when the last feasible position leaves the reach (the leg
-    lifts off there)."""
+    lifts off there). The path error (m) estimates how far the straight slide from P0 ends from a path that
+    turns with the leg's push: half the slide times the change of the push direction along it (the sagitta
+    of a uniformly turning path), the step loop's error control for the footpad position."""
     P[:] = P0
     fe12, fe3, fe1, fe2, power, alpha, beta, psi = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, X)
     margin = mu_s * max(fe3, 0.0) + FLOOR - fe12
     if (hold and not sliding) or fe12 <= (mu_d if sliding else mu_s) * max(fe3, 0.0) + FLOOR:   # eq. 33-34
-        return 0, power, alpha, beta, psi, margin, 0.0
+        return 0, power, alpha, beta, psi, margin, 0.0, 0.0
     h0 = fe12 - mu_d * max(fe3, 0.0)
     if h0 <= 0.0:                                               # static limit exceeded, dynamic one not
-        return 1, power, alpha, beta, psi, margin, 0.0
+        return 1, power, alpha, beta, psi, margin, 0.0, 0.0
+    return _slide(geo, cells, i, mem, shape, P0, mu_d, r, R, v, w, P, defl, frc, X, tol, fe1, fe2, fe12, h0, margin)
+
+
+@njit(cache=True)
+def _slide(geo, cells, i, mem, shape, P0, mu_d, r, R, v, w, P, defl, frc, X, tol, fe1, fe2, fe12, h0, margin):
+    """The slide: the footpad moved from P0 along the leg's push until FE12 = mu_D FE3 (see footpad_force)."""
     d0, d1 = -fe1 / fe12, -fe2 / fe12                           # the leg's push on the footpad
     # Expand until the excess changes sign or the footpad leaves the leg's reach: steps growing fourfold, or
     # just past the secant's root when that is nearer, so that the nearest crossing (the one continuous with
@@ -193,6 +206,7 @@ def footpad_force(geo, cells, i, mem, shape, P0, sliding, hold, mu_s, mu_d, r, R
     s_end, ok_hi = _refine(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_lo, h_lo, s_hi, h_hi, ok_hi, r, R, v, w, P,
                            defl, frc, X, tol)
     P[0], P[1], P[2] = P0[0] + s_end * d0, P0[1] + s_end * d1, 0.0
-    fe12, fe3, _, _, power, alpha, beta, psi = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, X)
+    fe12, fe3, fe1, fe2, power, alpha, beta, psi = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, X)
     deficit = 0.0 if ok_hi else max(fe12 - mu_d * max(fe3, 0.0), 0.0) / cells[3][i, 0]
-    return 1, power, alpha, beta, psi, margin, deficit
+    path = 0.5 * s_end * np.hypot(d0 + fe1 / fe12, d1 + fe2 / fe12) if fe12 > FLOOR else 0.0
+    return 1, power, alpha, beta, psi, margin, deficit, path

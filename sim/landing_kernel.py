@@ -1,7 +1,8 @@
 """The compiled step loop of a landing (AFFDL-TR-66-33 Sec. V; the report used Runge-Kutta-Merson).
 
 State y = (r, v terrain axes; q principal -> terrain; omega principal axes; W the work the legs took from
-the capsule). Dormand-Prince 5(4) with error control (or fixed steps) advances it. Discrete memory lives in
+the capsule). Dormand-Prince 5(4) with error control (or fixed steps) advances it; the error control also bounds the path
+error of sliding footpads (footpad_slip). Discrete memory lives in
 arrays the caller owns and changes only when a step is accepted (`_commit`): cell maxima, footpad positions
 and slip state, contact flags. Touchdown, lift-off and stick-to-slip are located to `event_tol` seconds:
 first on the step's continuous extension (leg evaluations only), then by real trial steps aimed just short of
@@ -40,8 +41,8 @@ C_TFINAL, C_RTOL, C_ATOL, C_FIXED, C_MAXSTEP, C_EVENTTOL, C_STOPBOTTOM, C_TIPCOS
     C_QUIET_FRAC, C_TAUS, C_PERIOD, C_ENERGY_T = range(14)
 # Counters (int array).
 K_STEPS, K_REJECTED, K_RHS, K_HIST, K_EVENTS, K_TRIALS = range(6)
-# Leg state columns of the work array mt: static margin, reach deficit, alpha, beta, psi.
-N_MT = 5
+# Leg state columns of the work array mt: static margin, reach deficit, alpha, beta, psi, footpad path error.
+N_MT = 6
 # Run scalars (float array): step size, quiescence clock, reference momentum, first bottoming (t, leg, cell), the
 # leg whose intermediate member struck the terrain.
 S_H, S_QUIET, S_MOMENTUM, S_BOT_T, S_BOT_LEG, S_BOT_CELL, S_STRUCK = range(7)
@@ -50,6 +51,7 @@ MAX_STALL = 100     # accepted steps in a row that do not advance time before th
 GTOL = 1e-12       # m: a contact event function this close above zero counts as there
 ARM = 1e-7          # m: a leg's next switch is armed once it is this far from its last one
 BAND = 1e-4         # m: an unarmed leg switches only this far past zero (grazing contact never chatters)
+PATH_FLOOR = 100.0  # event_tol: steps this short or shorter skip the footpad path error (_error_norm)
 
 
 @njit(cache=True)
@@ -60,26 +62,27 @@ def slip_events(mu):
 
 @njit(cache=True)
 def _legs(geo, cells, mu, mem, contact, P, sliding, shape, y, Pt, slt, dt, ft, Xt, mt, R):
-    """Footpad, slip state, forces and mt = (static margin, reach deficit, alpha, beta, psi) of every leg on the
-    ground at state y; returns the cells' power."""
+    """Footpad, slip state, forces and mt = (static margin, reach deficit, alpha, beta, psi, footpad path error)
+    of every leg at state y (mu = mu_S, mu_D, the slide's relative tolerance); returns the cells' power."""
     r, v, w = y[0:3], y[3:6], y[10:13]
     hold = slip_events(mu)
     power = 0.0
     for i in range(len(contact)):
         if contact[i]:
-            sl, pw, mt[i, 2], mt[i, 3], mt[i, 4], mt[i, 0], mt[i, 1] = footpad_force(
+            sl, pw, mt[i, 2], mt[i, 3], mt[i, 4], mt[i, 0], mt[i, 1], mt[i, 5] = footpad_force(
                 geo, cells, i, mem[i], shape[i], P[i], sliding[i], hold, mu[0], mu[1], r, R, v, w, Pt[i], dt[i], ft[i],
-                Xt[i])
+                Xt[i], mu[2])
             slt[i] = sl
             power += pw
+        else:
+            mt[i, 5] = 0.0
     return power
 
 
 @njit(cache=True)
 def rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape, y, dy, Pt, slt, dt, ft, Xt, mt):
     """dy/dt: eq. 3-5 in terrain axes, Euler's equations 6-8 in principal axes, quaternion rate, leg work."""
-    q = y[6:10] / np.sqrt(y[6] ** 2 + y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
-    R = quat_matrix(q)
+    R = quat_matrix(y[6:10])
     power = _legs(geo, cells, mu, mem, contact, P, sliding, shape, y, Pt, slt, dt, ft, Xt, mt, R)
     F0 = F1 = F2 = M0 = M1 = M2 = 0.0
     for i in range(len(contact)):
@@ -93,7 +96,7 @@ def rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape,
     h0, h1, h2 = cross(w0, w1, w2, inertia[0] * w0, inertia[1] * w1, inertia[2] * w2)
     dy[0], dy[1], dy[2] = y[3], y[4], y[5]
     dy[3], dy[4], dy[5] = gravity[0] + a0 / mass, gravity[1] + a1 / mass, gravity[2] + a2 / mass
-    dy[6:10] = quat_rate(q, y[10:13])
+    quat_rate(y[6:10], y[10:13], dy[6:10])
     dy[10], dy[11], dy[12] = (M0 - h0) / inertia[0], (M1 - h1) / inertia[1], (M2 - h2) / inertia[2]   # eq. 6-8
     dy[13] = power
 
@@ -109,7 +112,7 @@ def _events(cells, geo, mu, mem, contact, sliding, shape, armed, y, dt, mt, g, r
     g[n + i]: a sticking footpad's static margin mu_S FE3 + FLOOR - FE12 (N) when stick-to-slip is an event, else the
     constant 1."""
     n = len(contact)
-    R = quat_matrix(y[6:10] / np.sqrt(y[6] ** 2 + y[7] ** 2 + y[8] ** 2 + y[9] ** 2))
+    R = quat_matrix(y[6:10])
     located = slip_events(mu)
     for i in range(n):
         if contact[i]:
@@ -267,13 +270,24 @@ def _monitor(geo, mass, inertia, gravity, bottoming, up, body, order, mem, conta
 
 
 @njit(cache=True)
-def _error_norm(y, y1, err, ctl):
+def _error_norm(y, y1, err, ctl, geo, mt, Xt, weight, h):
     """RMS of the step's error estimate over atol + rtol max(|y|, |y1|) (Hairer, Norsett and Wanner, Solving ODEs I,
-    eq. II.4.11); NaN stays NaN."""
+    eq. II.4.11), or the largest sliding footpad's path error over atol + rtol x its leg's reach if larger; NaN
+    stays NaN. A path error counts in proportion to its leg's ground force over the capsule's weight (at most
+    fully): a footpad that carries little cannot move the capsule much, however its path strays, and its push
+    direction is ill-defined as its load goes to zero. Steps of PATH_FLOOR x event_tol or less skip the path
+    error: there it no longer falls as h^2 (a slide that jumps, the friction cone folding near zero normal load;
+    a push direction that turns by a finite angle within a tiny slide), so shorter steps would not reduce it."""
     e = 0.0
     for c in range(NY):
         e += (err[c] / (ctl[C_ATOL] + ctl[C_RTOL] * max(abs(y[c]), abs(y1[c])))) ** 2
-    return np.sqrt(e / NY)
+    e = np.sqrt(e / NY)
+    if h <= PATH_FLOOR * ctl[C_EVENTTOL]:
+        return e
+    for i in range(mt.shape[0]):
+        load = min(np.sqrt(Xt[i, 0] ** 2 + Xt[i, 1] ** 2 + Xt[i, 2] ** 2) / weight, 1.0)
+        e = max(e, load * mt[i, 5] / (ctl[C_ATOL] + ctl[C_RTOL] * geo[2][i]))
+    return e
 
 
 @njit(cache=True)
@@ -314,8 +328,7 @@ def _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, y1, K, h, 
         if not (a < m < b):
             m = 0.5 * (a + b)
         _dense(y, y1, K, h, m / h, yt)
-        q = yt[6:10] / np.sqrt(yt[6] ** 2 + yt[7] ** 2 + yt[8] ** 2 + yt[9] ** 2)
-        _legs(geo, cells, mu, mem, contact, P, sliding, shape, yt, Pt, slt, dt, ft, Xt, mt, quat_matrix(q))
+        _legs(geo, cells, mu, mem, contact, P, sliding, shape, yt, Pt, slt, dt, ft, Xt, mt, quat_matrix(yt[6:10]))
         _events(cells, geo, mu, mem, contact, sliding, shape, armed, yt, dt, mt, gm, False)
         k = _first(g_prev, gm)
         if k >= 0:
@@ -368,6 +381,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
     rhs(*args, y, K[0], *work)
     cnt[K_RHS] += 1
     _events(cells, geo, mu, mem, contact, sliding, shape, armed, y, dt, mt, g_prev, False)
+    weight = mass * np.sqrt(gravity[0] ** 2 + gravity[1] ** 2 + gravity[2] ** 2)
     fixed = ctl[C_FIXED] > 0.0
     h = ctl[C_FIXED] if fixed else run_state[S_H]
     t_final = ctl[C_TFINAL]
@@ -383,7 +397,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
         _stage(*args, y, h, K, y1, err, work, flight)
         cnt[K_RHS] += 6
         if not (fixed or flight):
-            e = _error_norm(y, y1, err, ctl)
+            e = _error_norm(y, y1, err, ctl, geo, mt, Xt, weight, h)
             if not e <= 1.0:
                 cnt[K_REJECTED] += 1
                 h *= _shrink(e)
@@ -424,7 +438,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                 cnt[K_RHS] += 6
                 cnt[K_TRIALS] += 1
                 if not (fixed or flight):
-                    e_trial = _error_norm(y, y1, err, ctl)
+                    e_trial = _error_norm(y, y1, err, ctl, geo, mt, Xt, weight, mid)
                     if not e_trial <= 1.0:                 # the trial step itself fails the error test
                         break
                 _events(cells, geo, mu, mem, contact, sliding, shape, armed, y1, dt, mt, g1, False)
@@ -492,6 +506,9 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                 switch(geo, cells, mem, contact, P, sliding, shape, armed, y, forced, last, work)
             rhs(*args, y, K[0], *work)
             cnt[K_RHS] += 1
+            for i in range(n):                         # a slide that jumps here (it starts with mu_S > mu_D, or a
+                if contact[i] and slt[i]:              # touchdown) starts the next step where it lands, so that
+                    P[i] = Pt[i]                       # the step's slide and its path error vanish with h
         H_dy[k] = K[0]
         cnt[K_HIST] = k + 1
         _events(cells, geo, mu, mem, contact, sliding, shape, armed, y, dt, mt, g_prev, False)
