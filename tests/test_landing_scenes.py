@@ -39,13 +39,51 @@ def test_slipping_footpads_sit_on_the_friction_cone():
     stays[:-1] = on[:-1] & on[1:]              # not a lift-off point (the leg leaves with its forces there)
     fe12, fe3 = np.hypot(fe[..., 0], fe[..., 1])[stays], fe[..., 2][stays]
     # eq. 33-34: in-plane force never exceeds mu_S = 1.5 times the normal force (sticking; the slide is solved
-    # to mu_D = 1.0). The bracketing solver closes the excess to 1e-12 of the forces (1e-9 relative is a safe
-    # margin); near a located lift-off the forces are within the event tolerance of zero, about
+    # to mu_D = 1.0). The bracketing solver closes the excess to 1e-3 rtol = 1e-9 of the forces, far inside
+    # mu_S; near a located lift-off the forces are within the event tolerance of zero, about
     # k v event_tol = 1e6 N/m x 10 m/s x 1e-10 s = 1e-3 N, hence the absolute 1e-2 N.
     assert np.all(fe12 <= 1.5 * fe3 * (1 + 1e-9) + 1e-2)
     moved = np.linalg.norm(np.diff(res.footpad, axis=0), axis=2)[on[1:] & on[:-1]]
     assert moved.max() > 1e-3                                     # the footpads did slide on the 20 deg slope
     assert res.energy["friction_J"] > 0                           # and friction took energy
+
+
+def test_adaptive_steps_follow_a_sliding_footpad_near_lift_off():
+    """Run 12101: leg 1 slides within ~0.1 mm of lift-off at 0.03 s, and if it lifts early the legs touch in
+    another order and peak XDD(3) is 5 % lower. The footpad path error control (the straight slide's sagitta in
+    the error norm) keeps rtol 1e-4 on the branch of fine fixed steps: peak XDD(3) within 0.1 % (issue 4's
+    accuracy criterion) of fixed steps of 5e-5 s, which agree with 1e-4 s to 1e-5; without the control every
+    rtol down to 1e-5 lost 5 %."""
+    cfg = read_scene(f"{SCENES}/telescoping_config1_run12101.toml")
+    span = dict(t_final=0.3, energy_check_from=None, taus=0.0, tip_angle=np.pi, stop_on_bottoming=False)
+    fine = simulate(cfg.scene, dataclasses.replace(cfg.controls, fixed_step=5e-5, **span))
+    adaptive = simulate(cfg.scene, dataclasses.replace(cfg.controls, rtol=1e-4, atol=1e-7, **span))
+    peak = [np.max(np.abs(r.accel_g[:, 2])) for r in (fine, adaptive)]
+    assert peak[1] == pytest.approx(peak[0], rel=1e-3)
+
+
+def test_footpad_path_error_falls_as_the_step_squared():
+    """The path error of a straight slide (sagitta: half the slide times the turn of the push along it) is
+    second order: with the slide and the turn both proportional to h, halving the step quarters it. Run
+    12101's sliding leg 1 at 0.033 s, one Dormand-Prince step of 1e-4 and of 5e-5 s: ratio 4 within 0.7
+    (measured 3.8; the turn is not yet exactly linear in h at 1e-4 s: 2.9 from 2e-4 s)."""
+    from sim import landing_kernel as lk
+    from sim.landing import _Run, initial_state
+    cfg = read_scene(f"{SCENES}/telescoping_config1_run12101.toml")
+    s = cfg.scene
+    run = _Run(s, dataclasses.replace(cfg.controls, t_final=0.033, energy_check_from=None, taus=0.0))
+    y = initial_state(s, run)
+    run.loop(y, 0.0)
+    assert run.sliding[0] == 1
+    path = []
+    for h in (1e-4, 5e-5):
+        K, y1, err = np.zeros((7, 14)), np.empty(14), np.empty(14)
+        lk.rhs(run.geo, run.cells, s.mass, s.inertia, s.gravity, run.mu, run.mem, run.contact, run.P, run.sliding,
+               run.shape, y, K[0], *run.work)
+        lk._stage(run.geo, run.cells, s.mass, s.inertia, s.gravity, run.mu, run.mem, run.contact, run.P,
+                  run.sliding, run.shape, y, h, K, y1, err, run.work, False)
+        path.append(run.work[5][0, 5])
+    assert path[1] > 0 and path[0] / path[1] == pytest.approx(4.0, abs=0.7)
 
 
 def test_randomized_scenes_never_fail():
