@@ -128,7 +128,7 @@ def leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, X):
     return x0 * e0 + x1 * e1 + x2 * e2, alpha, beta, psi
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _to_terrain(geo, i, s0, s1, s2, r, R):
     l0, l1, l2 = mv(geo[1][i], s0, s1, s2)
     attach = geo[0]
@@ -136,7 +136,7 @@ def _to_terrain(geo, i, s0, s1, s2, r, R):
     return r[0] + x0, r[1] + x1, r[2] + x2
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def free_footpad(geo, i, shape, r, R):
     """Terrain position (tuple) of the tip of the stored geometry ZETA = tip(alpha, beta, psi) (FORCE 3.10)."""
     s0, s1, s2 = footpad(geometry(geo[8], i), shape[0], shape[1], shape[2])

@@ -70,7 +70,7 @@ def main_set(cells, i, mem):
     return crush_cell.permanent_set(cells[3][i, 0], mem[0, 0], mem[0, 1])
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def free_footpad(geo, cells, i, mem, shape, r, R):
     """Terrain position (tuple) of a free leg's footpad: its stored geometry."""
     if geo[7][i] == ARTICULATED:

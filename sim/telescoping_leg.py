@@ -114,13 +114,13 @@ def leg_force(geo, cells, i, mem, P, r, R, v, w, defl, frc, X):
     return power, alpha, beta, al
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def axial_set(cells, i, mem):
     """Permanent set of the axial cell (m)."""
     return crush_cell.permanent_set(cells[3][i, 0], mem[0, 0], mem[0, 1])
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def footpad_at(geo, i, length, alpha, beta, r, R):
     """Terrain position (tuple) of leg i's footpad at length and leg-axes direction (alpha, beta) (eq. 13-15)."""
     attach, to_body = geo[0], geo[1]
@@ -130,7 +130,7 @@ def footpad_at(geo, i, length, alpha, beta, r, R):
     return r[0] + x0, r[1] + x1, r[2] + x2
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def free_footpad(geo, cells, i, mem, tilt, r, R):
     """Unloaded footpad in terrain axes (eq. 13): length rho less the axial permanent set, at the tilt the
     leg had when it last left the ground."""
