@@ -137,14 +137,20 @@ def _first(g_prev, g):
 
 
 @njit(cache=True)
+def _fly(y, h, inertia, gravity, out):
+    """out = the state h after y in free flight, closed form (eq. 62-88)."""
+    r, v, q, w = free_flight(y[0:3], y[3:6], y[6:10], y[10:13], inertia, gravity, h)
+    out[0:3], out[3:6], out[6:10], out[10:13], out[13] = r, v, q, w, y[13]
+
+
+@njit(cache=True)
 def _stage(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape, y, h, K, y1, err, work, flight):
     """One Dormand-Prince step of size h from y with K[0] = f(y): y1, the error estimate, K[6] = f(y1); the
     work arrays are left holding the legs at y1 (the last stage is evaluated there). With `flight` (no leg
     on the ground, axisymmetric body) the step is the closed form of eq. 62-88, exact."""
     Pt, slt, dt, ft, Xt, mt = work
     if flight:
-        r, v, q, w = free_flight(y[0:3], y[3:6], y[6:10], y[10:13], inertia, gravity, h)
-        y1[0:3], y1[3:6], y1[6:10], y1[10:13], y1[13] = r, v, q, w, y[13]
+        _fly(y, h, inertia, gravity, y1)
         err[:] = 0.0
         rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape, y1, K[6], Pt, slt, dt, ft, Xt, mt)
         return
@@ -313,9 +319,10 @@ def _dense(y0, y1, K, h, theta, out):
 
 @njit(cache=True)
 def _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, y1, K, h, j, g_prev, g1, tol, yt, gm, ga,
-           gb, work):
-    """The earliest crossing on the step's continuous extension, found by Illinois false position with one leg
-    evaluation per point (no integration): (time estimate, slope of the crossing function there, its index)."""
+           gb, work, flight, inertia, gravity):
+    """The earliest crossing on the step's continuous extension (in free flight, where the step computes no
+    stages, the closed form itself), found by Illinois false position with one leg evaluation per point (no
+    integration): (time estimate, slope of the crossing function there, its index)."""
     Pt, slt, dt, ft, Xt, mt = work
     a, b, side = 0.0, h, 0
     ga[:] = g_prev
@@ -327,7 +334,10 @@ def _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, y1, K, h, 
         m = b - fb * (b - a) / (fb - fa)
         if not (a < m < b):
             m = 0.5 * (a + b)
-        _dense(y, y1, K, h, m / h, yt)
+        if flight:
+            _fly(y, m, inertia, gravity, yt)
+        else:
+            _dense(y, y1, K, h, m / h, yt)
         _legs(geo, cells, mu, mem, contact, P, sliding, shape, yt, Pt, slt, dt, ft, Xt, mt, quat_matrix(yt[6:10]))
         _events(cells, geo, mu, mem, contact, sliding, shape, armed, yt, dt, mt, gm, False)
         k = _first(g_prev, gm)
@@ -419,7 +429,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
             cnt[K_EVENTS] += 1
             tol = ctl[C_EVENTTOL]
             est, slope, j = _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, y1, K, h, j,
-                                   g_prev, g1, 0.1 * tol, yt, gm, ga, gb, work)
+                                   g_prev, g1, 0.1 * tol, yt, gm, ga, gb, work, flight, inertia, gravity)
             lo, hi, side, mid, a_hi, newton, e_trial = 0.0, h, 0, -1.0, g1[j], 0, 0.0
             g_lo[:] = g_prev
             f_lo, f_hi = g_prev[j], g1[j]
