@@ -350,6 +350,31 @@ def implied_static_force(drop: int, leg: int, cell: str) -> tuple[float, float] 
     return e / s, 0.5 / s
 
 
+# Analytical strokes long enough to carry the fit of simulation_cell_force (ft): past the upper cell's 0.04 ft
+# loading ramp of the drop scenes, past the lower cell's 0.005 ft.
+FIT_MIN_STROKE_FT = {"upper": 0.03, "lower": 0.004}
+
+
+def simulation_cell_force(drop: int, cell: str) -> tuple[float, str]:
+    """Derived (not printed): the crushing force (lb) of one cell type in the report's simulation of a drop with a
+    table, and how it was found. Sec. VI.A (l. 2261): the simulation used one measured curve per cell type and
+    drop, the largest force for non-inclined drops, the leading leg's for inclined ones. The analytical energies
+    follow E = F (s - d) from the analytical strokes s (d: the loading/unloading slope correction, l. 2746), so a
+    least-squares line through the cells with enough stroke gives F ("analytical fit"). Drops 1 and 6 stroke all
+    four cells alike, which leaves F and d apart undetermined: there F is the mean static crushing force the
+    experimental energies imply (`implied_static_force`, l. 2744), weighted by its rounding bound
+    ("experimental")."""
+    side = corrected_strokes_energies()[drop]["analytical"][cell]
+    pts = [(s, e) for s, e in zip(side["stroke_ft"], side["energy_ft_lb"]) if s > FIT_MIN_STROKE_FT[cell]]
+    if len(pts) >= 2 and max(s for s, _ in pts) - min(s for s, _ in pts) > 1e-3:
+        n, ss, se = len(pts), sum(s for s, _ in pts), sum(e for _, e in pts)
+        sss, sse = sum(s * s for s, _ in pts), sum(s * e for s, e in pts)
+        return (n * sse - ss * se) / (n * sss - ss * ss), "analytical fit"
+    implied = [f for f in (implied_static_force(drop, leg, cell) for leg in LEGS) if f]
+    weights = [1.0 / bound ** 2 for _, bound in implied]
+    return sum(w * f for w, (f, _) in zip(weights, implied)) / sum(weights), "experimental"
+
+
 # ------------------------------------------------------------------ energy closure (l. 2748-2750, Fig. 102)
 ENERGY_CLOSURE = {
     # drop: (drop energy, experimental total, printed %, analytical total, printed %)
