@@ -65,9 +65,10 @@ NOTES = (
     "Test-model cells (not printed; examples/affdl-tr-66-33/drops/test_model_*.toml and dropNN.toml): per drop "
     "the crushing forces of the report's own simulation of it (one measured curve per cell type and drop, Sec. "
     "VI.A; recovered from the analytical energies, or for the flat drops 1 and 6 the experimental ones: "
-    "alightsize/drop_tables.simulation_cell_force), the scaled plateaus for drops 5 and 11, loading ramps of 0.04 ft (upper) and 0.005 ft (lower) and unloading rates such "
-    "that the report's analytical energies follow from its analytical strokes (E = F (s - d), d = F/2 (1/k_load - "
-    "1/k_unload), l. 2746; docs/notes/drop-test-data.md section 5); capsule bottom 0.5 ft below the CG.",
+    "alightsize/drop_tables.simulation_cell_force), the scaled plateaus for drops 5 and 11, loading ramps of "
+    "0.04 ft (upper) and 0.005 ft (lower) and unloading rates such that the report's analytical energies follow "
+    "from its analytical strokes (E = F (s - d), d = F/2 (1/k_load - 1/k_unload), l. 2746; "
+    "docs/notes/drop-test-data.md section 5); capsule bottom 0.5 ft below the CG.",
     "Table 12 (drop 9): the analytical energy rows of the upper and lower cells are printed swapped (GUIDE); "
     "they are shown swapped back (alightsize/drop_tables.CORRECTIONS); the total 2,680 ft-lb is unchanged.",
     "Units: ft and ft-lb as the report prints; drops.json is SI. Upper cell = parallelogram (psi) cell, lower "

@@ -11,8 +11,11 @@ from sim import crush_cell
 
 from alightsize.drop_report import FT, FT_LB, compare, run_drop
 from alightsize.landing_output import outcome
-from alightsize.drop_tables import (DROPS, STROKES_ENERGIES, corrected_strokes_energies, implied_static_force,
-                                    simulation_cell_force)
+from alightsize import units
+from alightsize.drop_tables import (DROPS, FIT_MIN_STROKE_FT, STROKES_ENERGIES, corrected_strokes_energies,
+                                    implied_static_force, simulation_cell_force)
+
+LBF = units.parse("1 lbf", "force")                                     # N per lbf
 
 
 @pytest.mark.parametrize("n", sorted(DROPS))
@@ -75,11 +78,10 @@ def test_drop_scenes_take_the_forces_of_the_reports_simulation(n):
     cells = run_drop(n).cfg.scene.legs[0]
     for cell, model in (("upper", cells.upper), ("lower", cells.lower)):
         force_lb, how = simulation_cell_force(n, cell)
-        assert model.arrays[1][1] / FT_LB * FT == pytest.approx(force_lb, abs=0.5)
+        assert model.arrays[1][1] / LBF == pytest.approx(force_lb, abs=0.5)
         side = corrected_strokes_energies()[n]["analytical"][cell]
         if how == "analytical fit":
-            pts = [(s, e) for s, e in zip(side["stroke_ft"], side["energy_ft_lb"]) if s > 0.03 or
-                   (cell == "lower" and s > 0.004)]
+            pts = [(s, e) for s, e in zip(side["stroke_ft"], side["energy_ft_lb"]) if s > FIT_MIN_STROKE_FT[cell]]
             d = np.mean([s - e / force_lb for s, e in pts])
             assert max(abs(force_lb * (s - d) - e) for s, e in pts) <= 3.0
         else:
