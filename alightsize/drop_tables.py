@@ -355,6 +355,16 @@ def implied_static_force(drop: int, leg: int, cell: str) -> tuple[float, float] 
 FIT_MIN_STROKE_FT = {"upper": 0.03, "lower": 0.004}
 
 
+def simulation_fit_points(drop: int, cell: str) -> list[tuple[float, float]]:
+    """(analytical stroke ft, analytical energy ft-lb) of the cells of one type in a tabled drop whose strokes carry
+    the fit of simulation_cell_force (longer than FIT_MIN_STROKE_FT)."""
+    tables = corrected_strokes_energies()
+    if drop not in tables:
+        raise ValueError(f"drop {drop} has no table of strokes and energies (Tables 6-13 cover {sorted(tables)})")
+    side = tables[drop]["analytical"][cell]
+    return [(s, e) for s, e in zip(side["stroke_ft"], side["energy_ft_lb"]) if s > FIT_MIN_STROKE_FT[cell]]
+
+
 def simulation_cell_force(drop: int, cell: str) -> tuple[float, str]:
     """Derived (not printed): the crushing force (lb) of one cell type in the report's simulation of a drop with a
     table, and how it was found. Sec. VI.A (l. 2261): the simulation used one measured curve per cell type and
@@ -364,8 +374,7 @@ def simulation_cell_force(drop: int, cell: str) -> tuple[float, str]:
     four cells alike, which leaves F and d apart undetermined: there F is the mean static crushing force the
     experimental energies imply (`implied_static_force`, l. 2744), weighted by its rounding bound
     ("experimental")."""
-    side = corrected_strokes_energies()[drop]["analytical"][cell]
-    pts = [(s, e) for s, e in zip(side["stroke_ft"], side["energy_ft_lb"]) if s > FIT_MIN_STROKE_FT[cell]]
+    pts = simulation_fit_points(drop, cell)
     if len(pts) >= 2 and max(s for s, _ in pts) - min(s for s, _ in pts) > 1e-3:
         n, ss, se = len(pts), sum(s for s, _ in pts), sum(e for _, e in pts)
         sss, sse = sum(s * s for s, _ in pts), sum(s * e for s, e in pts)

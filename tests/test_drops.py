@@ -12,8 +12,8 @@ from sim import crush_cell
 from alightsize.drop_report import FT, FT_LB, compare, run_drop
 from alightsize.landing_output import outcome
 from alightsize import units
-from alightsize.drop_tables import (DROPS, FIT_MIN_STROKE_FT, STROKES_ENERGIES, corrected_strokes_energies,
-                                    implied_static_force, simulation_cell_force)
+from alightsize.drop_tables import (DROPS, LEGS, STROKES_ENERGIES, corrected_strokes_energies, implied_static_force,
+                                    simulation_cell_force, simulation_fit_points)
 
 LBF = units.parse("1 lbf", "force")                                     # N per lbf
 
@@ -79,13 +79,12 @@ def test_drop_scenes_take_the_forces_of_the_reports_simulation(n):
     for cell, model in (("upper", cells.upper), ("lower", cells.lower)):
         force_lb, how = simulation_cell_force(n, cell)
         assert model.arrays[1][1] / LBF == pytest.approx(force_lb, abs=0.5)
-        side = corrected_strokes_energies()[n]["analytical"][cell]
         if how == "analytical fit":
-            pts = [(s, e) for s, e in zip(side["stroke_ft"], side["energy_ft_lb"]) if s > FIT_MIN_STROKE_FT[cell]]
+            pts = simulation_fit_points(n, cell)
             d = np.mean([s - e / force_lb for s, e in pts])
             assert max(abs(force_lb * (s - d) - e) for s, e in pts) <= 3.0
         else:
-            for leg in (1, 2, 3, 4):
+            for leg in LEGS:
                 implied = implied_static_force(n, leg, cell)
                 if implied:
                     assert abs(force_lb - implied[0]) <= implied[1] + 1e-9
