@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import copy
 import math
+import statistics
 
 SOURCE = "/work/shared/reference/000_9b9e1976ecb8d0f1.txt"
 
@@ -376,9 +377,8 @@ def simulation_cell_force(drop: int, cell: str) -> tuple[float, str]:
     ("experimental")."""
     pts = simulation_fit_points(drop, cell)
     if len(pts) >= 2 and max(s for s, _ in pts) - min(s for s, _ in pts) > 1e-3:
-        n, ss, se = len(pts), sum(s for s, _ in pts), sum(e for _, e in pts)
-        sss, sse = sum(s * s for s, _ in pts), sum(s * e for s, e in pts)
-        return (n * sse - ss * se) / (n * sss - ss * ss), "analytical fit"
+        strokes, energies = zip(*pts)
+        return statistics.linear_regression(strokes, energies).slope, "analytical fit"
     implied = [f for f in (implied_static_force(drop, leg, cell) for leg in LEGS) if f]
     weights = [1.0 / bound ** 2 for _, bound in implied]
     return sum(w * f for w, (f, _) in zip(weights, implied)) / sum(weights), "experimental"
