@@ -23,7 +23,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from sim.landing import Result, simulate  # noqa: E402
+from alightsize_sim.landing import Result, simulate  # noqa: E402
 
 from . import __version__, drop_tables, units  # noqa: E402
 from .atomic import write_atomic  # noqa: E402
@@ -52,7 +52,7 @@ NO_TABLE = {
 }
 NOTES = (
     "Simulated stroke: the permanent set of each cell, its largest deflection less the spring-back "
-    "force / unloading rate (sim/crush_cell.permanent_set); the report's analytical strokes are the permanent "
+    "force / unloading rate (alightsize_sim/crush_cell.permanent_set); the report's analytical strokes are the permanent "
     "positions at the end of its simulation converted to absorber deflections (Sec. VI.D, l. 2744). The largest "
     "deflections are in drops.json (simulated_max_deflection_m).",
     "Simulated energy: the work each cell dissipated (crushing and damping). Analytical energy: the report's "
