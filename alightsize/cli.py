@@ -28,13 +28,12 @@ def _design(args) -> int:
 
 def _audit(args) -> int:
     from .atomic import write_atomic
-    from .audit import audit_json, audit_table, junit_xml
+    from .audit import audit_json, audit_table, failure_label, junit_xml
     from .design import run_design
     from .design_config import read_design
     res = run_design(read_design(args.config))
     print(audit_table(res.records))
-    print("OK" if res.ok else "FAILED: " + ", ".join(f"{r.item.name} / {r.item.checks[r.index].kind}"
-                                                 for r in res.records if not r.ok))
+    print("OK" if res.ok else "FAILED: " + ", ".join(failure_label(r) for r in res.records if not r.ok))
     if args.json:
         write_atomic(args.json, json.dumps(audit_json(res.config, res.records), indent=2) + "\n")
     if args.junit:

@@ -10,6 +10,7 @@ from openpyxl import Workbook
 from openpyxl.styles import Font
 
 from . import __version__
+from .audit import failure_label
 from .checks import Step
 from .resources import data_dir
 from .units import fmt, to_display, unit_label
@@ -48,7 +49,8 @@ def context(res) -> dict:
             "checks": [{"kind": item.checks[r.index].kind, "mode": r.outcome.mode, "note": item.checks[r.index].note,
                         "steps": [_step(s, system) for s in r.outcome.steps],
                         "allowable": fmt(r.outcome.allowable, "stress", system) if r.outcome.allowable else "",
-                        "factor": _factor(r.outcome.factor), "required": f"{r.required:.2f}", "ok": r.ok}
+                        "factor": r.stated_factor, "required": f"{r.required:.2f}", "ok": r.ok,
+                        "flips": r.rounding_flips}
                        for r in recs]})
     weights = [{"label": w.label, "count": w.count, "each": fmt(w.each, "mass", system),
                 "total": fmt(w.count * w.each, "mass", system), "steps": [_step(s, system) for s in w.steps]}
@@ -67,7 +69,7 @@ def context(res) -> dict:
             "per_leg": fmt(res.per_leg, "mass", system), "legs": cfg.legs, "total": fmt(total, "mass", system),
             "capsule": fmt(cfg.capsule_mass, "mass", system) if cfg.capsule_mass else "",
             "percent": f"{100 * total / cfg.capsule_mass:.2f}" if cfg.capsule_mass else "",
-            "failed": [f"{r.item.name} / {r.item.checks[r.index].kind}" for r in res.records if not r.ok]}
+            "failed": [failure_label(r) for r in res.records if not r.ok]}
 
 
 def _loads_context(cfg, system: str) -> dict | None:

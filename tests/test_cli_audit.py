@@ -16,15 +16,41 @@ def run(*args) -> subprocess.CompletedProcess:
     return subprocess.run([sys.executable, "-m", "alightsize", *map(str, args)], capture_output=True, text=True)
 
 
-def test_audit_passes_all_four_examples(example, tmp_path):
+# Checks whose exact factor, computed from the printed inputs, is below the required one although the
+# report states it rounded to two decimals as a pass (docs/report-notes.md, "Factors that pass only as rounded").
+ROUNDED_PASSES = {"telescoping": set(), "articulated_3457": set(),
+                  "articulated_68": {("Peg Leg Strut", "compression")},
+                  "articulated_9": {("Peg Leg Strut", "compression"), ("Peg Leg Ring", "bending")}}
+
+
+def test_audit_of_the_four_examples_fails_only_the_factors_that_pass_as_rounded(example, tmp_path):
     out = tmp_path / "a.json"
     junit = tmp_path / "a.xml"
-    assert main(["audit", str(example), "--json", str(out), "--junit", str(junit)]) == 0
+    flips = ROUNDED_PASSES[example.stem]
+    assert main(["audit", str(example), "--json", str(out), "--junit", str(junit)]) == (1 if flips else 0)
     doc = json.loads(out.read_text())
-    assert doc["schema"] == "alightsize.audit/1" and doc["ok"] is True
+    assert doc["schema"] == "alightsize.audit/1" and doc["ok"] is (not flips)
     keys = {"configuration", "item", "check", "load_N", "stress_Pa", "allowable_Pa", "design_factor", "ok"}
     assert all(keys <= set(c) for c in doc["checks"]) and doc["checks"]
-    assert 'failures="0"' in junit.read_text()
+    assert {(c["item"], c["check"]) for c in doc["checks"] if not c["ok"]} == flips
+    assert all(c["ok_as_stated"] for c in doc["checks"])          # every factor passes as the report states it
+    assert f'failures="{len(flips)}"' in junit.read_text()
+
+
+def test_rounding_never_turns_a_failing_factor_into_a_pass(tmp_path, capsys):
+    # Configurations 6, 8 peg-leg strut (App. IV): 63,977 lbf on pi (2.0 - 0.181) 0.181 in^2 = 61,852 psi,
+    # f = 74,000 / 61,852 = 1.1964, stated "1.20" to two decimals (`decimals = 2`) against 1.20 required.
+    js = tmp_path / "a.json"
+    assert main(["audit", str(EXAMPLES / "articulated_68.toml"), "--json", str(js)]) == 1
+    strut = next(c for c in json.loads(js.read_text())["checks"] if c["item"] == "Peg Leg Strut")
+    f = 74000 / (63977 / (3.14159265 * 1.819 * 0.181))
+    assert strut["design_factor"] == pytest.approx(f, rel=1e-6)
+    assert strut["ok"] is False and strut["ok_as_stated"] is True
+    assert f"Peg Leg Strut / compression (f = 1.20 (exact {f:.4f}): passes only as rounded)" in capsys.readouterr().out
+    r = run("design", EXAMPLES / "articulated_68.toml", "--out", tmp_path / "d")
+    assert r.returncode == 1
+    html = (tmp_path / "d" / "report.html").read_text()
+    assert f"1.20 (exact {f:.4f})" in html and "reads as a pass only rounded" in html
 
 
 def _thin(text: str, item: str, new_wall: str) -> str:
@@ -76,9 +102,10 @@ def test_missing_file_exits_2(tmp_path):
 
 
 def test_design_writes_contract_summary(tmp_path):
-    assert main(["design", str(EXAMPLES / "articulated_9.toml"), "--out", str(tmp_path)]) == 0
+    # Exit 1: two of configuration 9's factors pass only as rounded (ROUNDED_PASSES); the files are written.
+    assert main(["design", str(EXAMPLES / "articulated_9.toml"), "--out", str(tmp_path)]) == 1
     doc = json.loads((tmp_path / "summary.json").read_text())
-    assert doc["schema"] == "alightsize.design/1" and doc["ok"] is True
+    assert doc["schema"] == "alightsize.design/1" and doc["ok"] is False
     w = doc["weights"]["9"]
     # Table 26: legs x per-leg weight = total, and fraction = total / 300 lb (closed-form arithmetic).
     assert w["legs"] == 4 and w["total_kg"] == pytest.approx(4 * w["per_leg_kg"], rel=1e-12)
