@@ -93,7 +93,8 @@ def _sweep(args) -> int:
               "run the same command again to finish", file=sys.stderr)
         return 130
     files = write_results(study, out)
-    print(f"{stats.computed} run(s) computed in {stats.wall_s:.1f} s, {stats.skipped} already done, "
+    print(f"{stats.computed} run(s) computed in {stats.wall_s:.1f} s, {stats.skipped} already done"
+          f"{f' ({stats.reused} of them stored under another id)' if stats.reused else ''}, "
           f"{stats.failed} failed")
     print("wrote " + ", ".join(str(f) for f in files))
     failed = json.loads((out / "outcomes.json").read_text())["failed"]

@@ -1,7 +1,7 @@
 """The run store of a sweep: SQLite in WAL mode at DIR/runs.sqlite (CONTRACTS.md), one row per run.
 
 Each finished run is committed on its own, so Ctrl-C, kill -9 or a dying worker loses no finished run; a
-re-run skips the runs stored `done` with the same inputs hash. Columns are added as a study needs them
+re-run skips the runs stored `done` with the same inputs hash, whatever their id (alightsize.sweep). Columns are added as a study needs them
 (parameters, summary figures); `wall_s`, `worker` and `finished_at` are the timing columns, the only ones
 that may differ between backends.
 """
@@ -44,6 +44,10 @@ class RunStore:
     def done(self) -> dict[str, str]:
         """run_id -> scene_hash of the runs stored `done`."""
         return dict(self.db.execute("SELECT run_id, scene_hash FROM runs WHERE status = 'done'"))
+
+    def delete(self, run_id: str) -> None:
+        with self.db:
+            self.db.execute("DELETE FROM runs WHERE run_id = ?", (run_id,))
 
     def put(self, row: dict) -> None:
         """Insert or replace one run and commit it (new columns are added first)."""

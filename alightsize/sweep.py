@@ -29,11 +29,12 @@ from .study import Run, Study, agrees, outcome_class, parameter_columns, scene_h
 @dataclass(frozen=True)
 class SweepStats:
     total: int
-    skipped: int
+    skipped: int               # already stored done with the same inputs (`reused` of them under another id)
     computed: int
     failed: int
     wall_s: float
     backend: str
+    reused: int = 0
 
 
 def task_of(study: Study, run: Run, out: Path, truss=None) -> dict:
@@ -63,6 +64,18 @@ def _figures(s: dict) -> dict:
     return row
 
 
+def _judged(row: dict, task: dict) -> dict:
+    """The columns that depend on the study rather than on the landing: agreement with the printed class and
+    the criteria (judged on the stored peaks and outcome, so a changed criterion needs no new landing)."""
+    out = {"agrees": None if task["reference"] is None else int(agrees(row["outcome_class"], task["reference"]))}
+    if task["criteria"] is not None:
+        peak = {"xdd_g": [row[f"peak_xdd{i}_g"] for i in (1, 2, 3)],
+                "onset_g_s": [row[f"peak_onset_xdd{i}_g_s"] for i in (1, 2, 3)]}
+        failures = task["criteria"].failures({"peak": peak, "outcome": row["outcome"]})
+        out["criteria_ok"], out["criteria_failed"] = int(not failures), "; ".join(failures)
+    return out
+
+
 def _inputs(task: dict) -> dict:
     """The columns a run's row has whatever becomes of it: id, scene, inputs hash, parameters."""
     return {"run_id": task["run_id"], "scene": task["scene_key"], "scene_hash": task["scene_hash"],
@@ -84,10 +97,7 @@ def execute(task: dict) -> dict:
         s = summary(cfg, res)
         row.update(_figures(s))
         row["outcome_class"] = outcome_class(cfg, res)
-        row["agrees"] = None if task["reference"] is None else int(agrees(row["outcome_class"], task["reference"]))
-        if task["criteria"] is not None:
-            failures = task["criteria"].failures(s)
-            row["criteria_ok"], row["criteria_failed"] = int(not failures), "; ".join(failures)
+        row.update(_judged(row, task))
         if task["truss"] is not None:
             from .dynamic_loads import dynamic_envelope
             row["member_loads_json"] = json.dumps(dynamic_envelope(cfg, res, task["truss"]))
@@ -210,9 +220,8 @@ def run_sweep(study: Study, out: Path, backend: str = "pool", workers: int | Non
     workers = workers or os.cpu_count() or 1
     store = RunStore(out / "runs.sqlite")
     store.set_meta(study=study.name, title=study.title, seed=study.seed, study_file=str(study.path))
-    done = store.done()
     tasks = [task_of(study, r, out, truss) for r in study.runs]
-    todo = [t for t in tasks if done.get(t["run_id"]) != t["scene_hash"]]
+    todo, reused = _stored(store, tasks)
     t0 = time.perf_counter()
     runner: Iterable[dict]
     if backend == "serial" or not todo:
@@ -236,4 +245,33 @@ def run_sweep(study: Study, out: Path, backend: str = "pool", workers: int | Non
     finally:
         bar.close()
         store.close()
-    return SweepStats(len(tasks), len(tasks) - len(todo), len(todo), failed, time.perf_counter() - t0, backend)
+    return SweepStats(len(tasks), len(tasks) - len(todo), len(todo), failed, time.perf_counter() - t0, backend,
+                      reused)
+
+
+def _stored(store: RunStore, tasks: list[dict]) -> tuple[list[dict], int]:
+    """(the tasks left to compute, how many took a stored run under another id). Runs are keyed by their
+    inputs: a task whose inputs hash a stored `done` run has takes that row, re-judged by the study's criteria;
+    the row moves to the task's id unless its old id is still a run of the study (then it is copied), so a
+    grown grid whose ids were renumbered computes only its new points and leaves no orphaned rows."""
+    done = store.done()
+    by_hash = {h: rid for rid, h in sorted(done.items())}
+    ids = {t["run_id"] for t in tasks}
+    rows = {r["run_id"]: r for r in store.rows(list(done))}
+    todo, reused = [], 0
+    for t in tasks:
+        old = t["run_id"] if done.get(t["run_id"]) == t["scene_hash"] else by_hash.get(t["scene_hash"])
+        if old is None:
+            todo.append(t)
+            continue
+        row = {**rows[old], **_inputs(t)}
+        row.update(_judged(row, t))
+        if old != t["run_id"] or any(rows[old].get(k) != v for k, v in row.items()):
+            store.put(row)
+        if old != t["run_id"]:
+            reused += 1
+            if old not in ids:
+                store.delete(old)
+                by_hash[t["scene_hash"]] = t["run_id"]
+                rows[t["run_id"]] = row
+    return todo, reused

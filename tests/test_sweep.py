@@ -242,3 +242,53 @@ def test_history_per_run_on_request(tmp_path):
     for rel, t_end in rows:
         h = pd.read_parquet(tmp_path / "o" / rel)
         assert h["t_s"].iloc[-1] == pytest.approx(t_end, abs=1e-12)
+
+
+def _grid_study(tmp_path: Path, slopes: list[str], criteria: str = "instrument") -> Path:
+    path = tmp_path / "grid.toml"
+    values = ", ".join(f'"{s}"' for s in slopes)
+    path.write_text(f'''[study]
+name = "ml"
+[scenes]
+ML = "{SCENE}"
+[grid]
+"terrain.slope" = [{values}]
+"initial.velocity[1]" = ["0 ft/s", "10 ft/s", "15 ft/s"]
+[criteria]
+preset = "{criteria}"
+''')
+    return path
+
+
+def test_a_grown_grid_computes_only_its_new_points_and_keeps_no_orphaned_rows(tmp_path):
+    """Runs are keyed by their inputs: growing an axis from 3 to 4 values renumbers ML-1 ... ML-9 as
+    ML-01 ... ML-12, yet only the 3 new points are landed, the 9 stored rows move to their new ids with the
+    same figures, and the store holds exactly the study's 12 runs. A changed criterion re-judges stored runs
+    without landing them again."""
+    out = tmp_path / "out"
+    first = run_sweep(read_study(_grid_study(tmp_path, ["-10 deg", "0 deg", "10 deg"])), out, "serial", quiet=True)
+    assert (first.computed, first.skipped) == (9, 0)
+    before = {json.loads(r[1])["terrain.slope"] + json.loads(r[1])["initial.velocity[1]"]: r[2:] for r in
+              sqlite3.connect(out / "runs.sqlite").execute("SELECT run_id, params_json, scene_hash, peak_xdd3_g "
+                                                           "FROM runs")}
+    study = read_study(_grid_study(tmp_path, ["-10 deg", "0 deg", "10 deg", "20 deg"]))
+    assert [r.run_id for r in study.runs][:2] == ["ML-01", "ML-02"]
+    grown = run_sweep(study, out, "serial", quiet=True)
+    assert (grown.computed, grown.skipped, grown.reused) == (3, 9, 9)
+    con = sqlite3.connect(out / "runs.sqlite")
+    rows = con.execute("SELECT run_id, params_json, scene_hash, peak_xdd3_g FROM runs").fetchall()
+    assert sorted(r[0] for r in rows) == sorted(r.run_id for r in study.runs)
+    for run_id, params, h, peak in rows:
+        p = json.loads(params)
+        key = p["terrain.slope"] + p["initial.velocity[1]"]
+        if key in before:
+            assert (h, peak) == before[key]                 # the same stored landing, under its new id
+    assert not any("onset" in v for (v,) in con.execute("SELECT criteria_failed FROM runs"))   # no onset limit
+    strict = run_sweep(read_study(_grid_study(tmp_path, ["-10 deg", "0 deg", "10 deg", "20 deg"], "human")), out,
+                       "serial", quiet=True)
+    assert (strict.computed, strict.skipped) == (0, 12)
+    # The human preset limits onset to 1000 g/s on axes 1-2 (Sec. II.A.1): stored runs are judged by it now.
+    onsets = dict(con.execute("SELECT run_id, max(peak_onset_xdd1_g_s, peak_onset_xdd2_g_s) FROM runs"))
+    judged = dict(con.execute("SELECT run_id, criteria_failed FROM runs"))
+    assert any(v > 1000 for v in onsets.values())
+    assert all(("XDD(1) onset" in judged[k] or "XDD(2) onset" in judged[k]) == (v > 1000) for k, v in onsets.items())
