@@ -20,9 +20,8 @@ def _design(args) -> int:
     from .design_config import read_design
     res = run_design(read_design(args.config, Path(args.out) / "landings"))
     files = write_design(res, Path(args.out))
-    failed = [r for r in res.records if not r.ok]
-    print(f"{res.config.configuration}: {len(res.records)} checks, {len(failed)} below the required design factor; "
-          f"wrote {', '.join(str(f) for f in files)}")
+    print(f"{res.config.configuration}: {res.verdict()}")
+    print(f"wrote {', '.join(str(f) for f in files)}")
     return 0 if res.ok else 1
 
 

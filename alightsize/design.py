@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from collections import Counter
 from dataclasses import dataclass
 from math import isfinite
 from pathlib import Path
@@ -11,6 +12,7 @@ from .atomic import write_atomic
 from .audit import CheckRecord, audit_json, run_audit
 from .design_config import DesignConfig
 from .items import Item
+from .landing_criteria import violation_kinds
 from .sizing import Sizing, size_item
 
 SCHEMA = "alightsize.design/1"
@@ -34,12 +36,48 @@ class DesignResult:
     weights: list[WeightRow]
 
     @property
-    def ok(self) -> bool:
+    def checks_ok(self) -> bool:
+        """Every check at or above its required design factor, every sized item feasible."""
         return all(r.ok for r in self.records) and all(s.feasible for s in self.sizings)
+
+    @property
+    def landings_ok(self) -> bool:
+        """Every landing case meets the study's criteria (or the landings are load cases only, or none)."""
+        return self.config.landings is None or self.config.landings.ok
+
+    @property
+    def ok(self) -> bool:
+        return self.checks_ok and self.landings_ok
+
+    def verdict(self) -> str:
+        """One line: whether the design passes, and what fails."""
+        failed = [r for r in self.records if not r.ok]
+        parts = [f"{len(failed)} of {len(self.records)} checks below the required design factor" if failed
+                 else f"all {len(self.records)} checks meet their required design factor"]
+        if any(not s.feasible for s in self.sizings):
+            parts.append("sizing cannot meet the required factor for " +
+                         ", ".join(s.item for s in self.sizings if not s.feasible))
+        land = self.config.landings
+        if land is not None:
+            n, bad = len(land.rows), land.failing
+            if land.role == "load_cases":
+                parts.append(f"{n} landings used as load cases only (criteria not required: {len(bad)} of them "
+                             "violate the study's criteria)")
+            elif bad:
+                parts.append(f"{len(bad)} of {n} landings fail their criteria ({criteria_counts(bad)})")
+            else:
+                parts.append(f"all {n} landings meet their criteria")
+        return ("PASS: " if self.ok else "FAIL: ") + "; ".join(parts)
 
     @property
     def per_leg(self) -> float:
         return sum(w.count * w.each for w in self.weights)
+
+
+def criteria_counts(rows) -> str:
+    """"a cell bottomed 8, XDD(1) > 1000 g/s 24": how many landings violate each kind of criterion."""
+    kinds = Counter(k for r in rows for k in dict.fromkeys(violation_kinds(r["criteria_failed"])))
+    return ", ".join(f"{k} {n}" for k, n in kinds.most_common())
 
 
 def run_design(cfg: DesignConfig) -> DesignResult:
@@ -70,7 +108,8 @@ def weights_json(res: DesignResult) -> dict:
 
 
 def summary_json(res: DesignResult) -> dict:
-    out = {"schema": SCHEMA, "ok": res.ok, "configuration": res.config.configuration,
+    out = {"schema": SCHEMA, "ok": res.ok, "configuration": res.config.configuration, "verdict": res.verdict(),
+           "checks_ok": res.checks_ok, "landings_ok": res.landings_ok,
            "audit": {k: v for k, v in audit_json(res.config, res.records).items() if k != "schema"},
            "weights": weights_json(res)}
     if res.config.loads is not None:

@@ -62,3 +62,14 @@ def read_criteria(node: Node | None) -> Criteria | None:
     node.string("note", "")
     node.finish()
     return Criteria(xdd, onset, **flags)
+
+
+def violation_kinds(failed: str | None) -> list[str]:
+    """The kinds of a stored `criteria_failed` ("; "-joined failures) without their figures
+    ("XDD(1) onset 2112 g/s > 1000 g/s" -> "XDD(1) onset > 1000 g/s"; "a cell bottomed" as it is)."""
+    out = []
+    for f in (failed or "").split("; "):
+        if f:
+            head, sep, limit = f.partition(" > ")
+            out.append(" ".join(head.split(" ")[:-2]) + sep + limit if sep else f)
+    return out

@@ -7,6 +7,8 @@ and the report says which governed.
 [landings]
 study = "studies/design_landings.toml"   # relative to the design config
 envelopes = ["3457"]                      # the envelopes of the [loads] file the landings extend
+role = "criteria"                         # default: every landing must meet the study's [criteria];
+                                          # "load_cases": the landings only supply member loads
 ```
 """
 
@@ -23,10 +25,12 @@ from .config import Node
 from .load_envelopes import Extreme
 from .loads import LoadsResult, pick
 from .run_store import RunStore
+from .scene_config import impact_conditions, read_scene
 from .study import Study, read_study
 from .sweep import run_sweep
 
 LANDING = "landing "        # prefix of the `configuration` of an extreme that a landing set
+ROLES = ("criteria", "load_cases")
 
 
 @dataclass(frozen=True)
@@ -35,6 +39,18 @@ class Landings:
     envelopes: tuple[str, ...]
     rows: tuple[dict, ...]            # the stored runs, study order
     quasi_static: LoadsResult         # the envelopes before the landings joined them
+    role: str = "criteria"            # "criteria": the design passes only if every landing meets them
+    conditions: tuple[dict, ...] = () # per run: scene_config.impact_conditions
+
+    @property
+    def failing(self) -> tuple[dict, ...]:
+        """The runs that violate the study's criteria."""
+        return tuple(r for r in self.rows if r.get("criteria_ok") == 0)
+
+    @property
+    def ok(self) -> bool:
+        """Whether the landings let the design pass: always as load cases, else when every one meets them."""
+        return self.role == "load_cases" or not self.failing
 
 
 def _extreme(value: float | None, at: dict | None, run_id: str) -> Extreme | None:
@@ -70,9 +86,10 @@ def merge(loads: LoadsResult, rows: tuple[dict, ...], names: tuple[str, ...]) ->
 
 def run_landings(node: Node, design: Path, loads: LoadsResult | None, out: Path | None) -> tuple[LoadsResult, Landings]:
     """Read `[landings]`, run its study into `out` (resumable; a temporary folder when None) and merge."""
-    node.allow(("study", "envelopes", "note"))
+    node.allow(("study", "envelopes", "role", "note"))
     path = design.parent / node.string("study")
     names = tuple(node.strings("envelopes"))
+    role = node.string("role", "criteria", choices=ROLES)
     node.string("note", "")
     node.finish()
     if loads is None or not loads.config.cases:
@@ -85,6 +102,9 @@ def run_landings(node: Node, design: Path, loads: LoadsResult | None, out: Path 
     if not path.is_file():
         raise node.error("study", "the path of a study TOML (relative to the design config)", f"{str(path)!r}: no such file")
     study = read_study(path)
+    if role == "criteria" and study.criteria is None:
+        raise node.error("role", f"role = \"load_cases\", or [criteria] in {path.name} for the landings to meet",
+                         "role = \"criteria\" (the default) and a study without [criteria]")
     with tempfile.TemporaryDirectory() as tmp:
         folder = out or Path(tmp)
         run_sweep(study, folder, truss=loads.config.cases[0].truss)
@@ -95,7 +115,8 @@ def run_landings(node: Node, design: Path, loads: LoadsResult | None, out: Path 
     if failed:
         raise node.error("study", "landing cases that all run", f"runs {', '.join(r['run_id'] for r in failed)} "
                          f"failed: {failed[0]['message']}")
-    return merge(loads, rows, names), Landings(study, names, rows, loads)
+    conditions = tuple(impact_conditions(read_scene(r.scene, r.overrides)) for r in study.runs)
+    return merge(loads, rows, names), Landings(study, names, rows, loads, role, conditions)
 
 
 def quasi_static_load(landings: Landings, envelope: str, member: str, sense: str) -> float | None:
@@ -105,11 +126,14 @@ def quasi_static_load(landings: Landings, envelope: str, member: str, sense: str
 
 
 def landings_json(landings: Landings) -> list[dict]:
-    """design summary.json `landings` (CONTRACTS.md): scene, outcome, peak and energy per landing case."""
+    """design summary.json `landings` (CONTRACTS.md): scene, conditions, outcome, criteria, peak and energy per
+    landing case."""
     out = []
-    for r in landings.rows:
-        out.append({"run_id": r["run_id"], "scene": r["scene"], "outcome": r["outcome"],
-                    "outcome_class": r["outcome_class"],
+    for r, c in zip(landings.rows, landings.conditions):
+        out.append({"run_id": r["run_id"], "scene": r["scene"], "parameters": json.loads(r["params_json"]),
+                    "conditions": c, "outcome": r["outcome"], "outcome_class": r["outcome_class"],
+                    "criteria_ok": None if r.get("criteria_ok") is None else bool(r["criteria_ok"]),
+                    "criteria_failed": [f for f in (r.get("criteria_failed") or "").split("; ") if f],
                     "peak": {"xdd_g": [r[f"peak_xdd{i}_g"] for i in (1, 2, 3)],
                              "omd_rad_s2": [r[f"peak_omd{i}_rad_s2"] for i in (1, 2, 3)],
                              "onset_g_s": [r[f"peak_onset_xdd{i}_g_s"] for i in (1, 2, 3)]},

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import json
+import re
+from collections import Counter
 from math import isfinite
 from pathlib import Path
 
@@ -64,12 +67,61 @@ def context(res) -> dict:
                "saved": fmt(s.weight_printed - s.weight_sized, "mass", system)
                if s.weight_printed and s.weight_sized else ""} for s in res.sizings]
     return {"loads": _loads_context(cfg, system), "references": _references(cfg, system),
+            "verdict": res.verdict(), "checks_ok": res.checks_ok, "landings": _landings(cfg, system),
             "title": cfg.title, "configuration": cfg.configuration, "source": cfg.path.name, "units": system,
             "version": __version__, "ok": res.ok, "sheets": sheets, "weights": weights, "sizing": sizing,
             "per_leg": fmt(res.per_leg, "mass", system), "legs": cfg.legs, "total": fmt(total, "mass", system),
             "capsule": fmt(cfg.capsule_mass, "mass", system) if cfg.capsule_mass else "",
             "percent": f"{100 * total / cfg.capsule_mass:.2f}" if cfg.capsule_mass else "",
             "failed": [failure_label(r) for r in res.records if not r.ok]}
+
+
+def _conditions(c: dict, system: str) -> str:
+    """"35.0 ft/s down, 15.0 ft/s across, slope 20°, μ 1.5 / 1.0" (friction above 100 reads "non-slip")."""
+    mu = "non-slip" if c["mu_static"] >= 100 else f"μ {c['mu_static']:g} / {c['mu_dynamic']:g}"
+    return (f"{fmt(c['vertical_m_s'], 'velocity', system, 3)} down, {fmt(c['horizontal_m_s'], 'velocity', system, 3)} "
+            f"across, slope {c['slope_deg']:.0f}°, {mu}")
+
+
+def landing_rows(cfg, system: str) -> dict[str, dict]:
+    """run id -> what the report shows of a landing case: parameters as written, conditions, outcome, peaks
+    (g of standard gravity, as the criteria), onset rates and the criteria it violates."""
+    land = cfg.landings
+    out = {}
+    for r, c in zip(land.rows, land.conditions):
+        params = {k: v for k, v in json.loads(r["params_json"]).items() if k != "scene"}
+        out[r["run_id"]] = {
+            "id": r["run_id"], "scene": r["scene"], "anchor": "landing-" + re.sub(r"[^A-Za-z0-9_-]", "_", r["run_id"]),
+            "parameters": ", ".join(f"{k.split('.')[-1]} {v}" for k, v in params.items()),
+            "conditions": _conditions(c, system), "outcome": r["outcome"],
+            "outcome_class": r["outcome_class"].replace("_", " "),
+            "peak": [f"{r[f'peak_xdd{i}_g']:.2f}" for i in (1, 2, 3)],
+            "onset": [f"{r[f'peak_onset_xdd{i}_g_s']:,.0f}" for i in (1, 2, 3)],
+            "ok": r.get("criteria_ok") != 0,
+            "failures": [f for f in (r.get("criteria_failed") or "").split("; ") if f]}
+    return out
+
+
+def _landings(cfg, system: str) -> dict | None:
+    """The landing section: every case, the criteria, how many fail and why, the role of the landings."""
+    from .design import criteria_counts
+    land = cfg.landings
+    if land is None:
+        return None
+    crit = land.study.criteria
+    limits = []
+    if crit is not None:
+        if crit.max_xdd_g:
+            limits.append("peak XDD(1, 2, 3) at most " + " / ".join(f"{x:g}" for x in crit.max_xdd_g) + " g")
+        if crit.max_onset_g_s:
+            limits.append("onset at most " + " / ".join(f"{x:,.0f}" for x in crit.max_onset_g_s) + " g/s")
+        limits += [text for flag, text in ((crit.no_bottoming, "no cell bottoms"), (crit.no_tumbling, "no tipping"),
+                                           (crit.no_body_contact, "no body contact")) if flag]
+    rows = list(landing_rows(cfg, system).values())
+    return {"role": land.role, "study": land.study.name, "count": len(rows), "rows": rows,
+            "criteria": "; ".join(limits) or "none given", "failing": len(land.failing),
+            "counts": criteria_counts(land.failing),
+            "outcomes": ", ".join(f"{k} {n}" for k, n in Counter(r["outcome"] for r in land.rows).most_common())}
 
 
 def _loads_context(cfg, system: str) -> dict | None:
@@ -80,7 +132,6 @@ def _loads_context(cfg, system: str) -> dict | None:
 
 def _reference_label(cfg, key: str) -> str:
     """"item[0].check[1].load" -> "Upper Truss / column_buckling (load)"."""
-    import re
     m = re.match(r"item\[(\d+)\]\.check\[(\d+)\]\.(.+)$", key)
     if not m:
         return key
@@ -89,19 +140,23 @@ def _reference_label(cfg, key: str) -> str:
 
 
 def _references(cfg, system: str) -> list[dict]:
-    """The checks' envelope loads; with landing cases also the quasi-static load and which governed."""
+    """The checks' envelope loads; with landing cases also the quasi-static load, which governed and, for a
+    landing, its conditions and outcome."""
     from math import degrees
     from .landing_loads import LANDING, quasi_static_load
+    landings = landing_rows(cfg, system) if cfg.landings is not None else {}
     out = []
     for r in cfg.load_refs:
         row = {"key": _reference_label(cfg, r.key), "envelope": r.envelope, "member": r.member, "sense": r.sense,
                "factor": f"{r.factor:g}", "value": fmt(r.value, "force", system),
                "at": ", ".join(f"{degrees(a):+.0f}" for a in r.extreme.at) if r.extreme else "",
-               "configuration": r.extreme.configuration if r.extreme else "", "quasi_static": None, "governs": ""}
+               "configuration": r.extreme.configuration if r.extreme else "", "quasi_static": None, "governs": "",
+               "landing": None}
         if cfg.landings is not None and r.extreme is not None and r.envelope in cfg.landings.envelopes:
             qs = quasi_static_load(cfg.landings, r.envelope, r.member, r.sense)
             row["quasi_static"] = fmt(qs * r.factor, "force", system) if qs is not None else "-"
             row["governs"] = "landing" if r.extreme.configuration.startswith(LANDING) else "quasi-static"
+            row["landing"] = landings.get(r.extreme.configuration.removeprefix(LANDING))
         out.append(row)
     return out
 

@@ -359,3 +359,14 @@ def _controls(node: Node | None, mass: float, legs: list[TelescopingLeg | Articu
     return Controls(t_final=t_final, rtol=rtol, atol=atol, fixed_step=fixed, max_step=max_step, event_tol=event_tol,
                     tip_angle=tip, taus=taus, period=period, stop_on_bottoming=stop, energy_check_from=energy_t,
                     closed_form_flight=flight)
+
+
+def impact_conditions(cfg: SceneConfig) -> dict:
+    """What a reader asks of a landing case, in SI: the sink speed along gravity, the speed across it, the
+    terrain slope (angle between the terrain normal and the vertical) and the friction coefficients."""
+    g = cfg.scene.gravity / np.linalg.norm(cfg.scene.gravity)
+    v = cfg.scene.v0
+    down = float(v @ g)
+    return {"vertical_m_s": down, "horizontal_m_s": float(np.linalg.norm(v - down * g)),
+            "slope_deg": float(np.degrees(np.arccos(np.clip(-g[2], -1.0, 1.0)))),
+            "mu_static": float(cfg.scene.mu_static), "mu_dynamic": float(cfg.scene.mu_dynamic)}

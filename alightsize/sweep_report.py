@@ -16,6 +16,7 @@ from openpyxl.styles import Font
 
 from . import __version__
 from .atomic import write_atomic
+from .landing_criteria import violation_kinds
 from .report import template_env, text_cell
 from .run_store import RunStore
 from .study import Study, parameter_columns
@@ -166,7 +167,7 @@ def results(study: Study, rows: list[dict]) -> dict:
                                       "no_bottoming": study.criteria.no_bottoming,
                                       "no_tumbling": study.criteria.no_tumbling,
                                       "no_body_contact": study.criteria.no_body_contact},
-                           "violations": _proportions([v for r in done for v in _kinds(r["criteria_failed"])], n)}
+                           "violations": _proportions([v for r in done for v in violation_kinds(r["criteria_failed"])], n)}
     doc["run_list"] = [{"run_id": r["run_id"], "scene": r["scene"], "params": json.loads(r["params_json"]),
                         "status": r["status"], "outcome": r.get("outcome"), "outcome_class": r.get("outcome_class"),
                         "reference_class": r.get("reference_class"),
@@ -176,16 +177,6 @@ def results(study: Study, rows: list[dict]) -> dict:
                         "t_end_s": r.get("t_end_s"), "closure_rel": r.get("closure_rel"), "message": r.get("message")}
                        for r in rows]
     return doc
-
-
-def _kinds(failed: str | None) -> list[str]:
-    """A violation's kind without its figures ("XDD(3) 21.2 g > 20 g" -> "XDD(3) > 20 g")."""
-    out = []
-    for f in (failed or "").split("; "):
-        if f:
-            words = f.split(" ")
-            out.append(" ".join(words[:1] + words[words.index(">"):]) if ">" in words else f)
-    return out
 
 
 def _put(sheet, row: int, values: list) -> None:

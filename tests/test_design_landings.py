@@ -55,3 +55,72 @@ def test_unknown_envelope_is_bad_input(tmp_path):
     with pytest.raises(InputError) as e:
         read_design(bad, tmp_path / "o")
     assert "landings.envelopes" in str(e.value) and "3458" in str(e.value)
+
+
+# AFFDL-TR-66-33 Sec. II.A.1 (human, couch facing up): 10 / 10 / 20 g and 1,000 / 1,000 / 10,000 g/s onset on
+# body axes 1, 2, 3; the study's preset "human".
+SEC_II_G, SEC_II_ONSET = (10.0, 10.0, 20.0), (1000.0, 1000.0, 10000.0)
+
+
+def _meets_sec_ii(r: dict) -> bool:
+    """A landing meets the human criteria: peaks and onsets within Sec. II.A.1, no bottoming or tumbling."""
+    return (all(r[f"peak_xdd{i}_g"] <= SEC_II_G[i - 1] for i in (1, 2, 3))
+            and all(r[f"peak_onset_xdd{i}_g_s"] <= SEC_II_ONSET[i - 1] for i in (1, 2, 3))
+            and r["outcome"] not in ("bottomed", "tipped", "body_contact", "failed", "time_out"))
+
+
+@pytest.fixture(scope="module")
+def rendered(tmp_path_factory):
+    """`alightsize design` of the example, as a user runs it: (exit status, stdout, report.html, summary)."""
+    import subprocess
+    import sys
+    out = tmp_path_factory.mktemp("design")
+    r = subprocess.run([sys.executable, "-m", "alightsize", "design", str(CONFIG), "--out", str(out)],
+                       capture_output=True, text=True)
+    return r.returncode, r.stdout, (out / "report.html").read_text(), json.loads((out / "summary.json").read_text())
+
+
+def test_a_design_whose_landings_fail_their_criteria_does_not_pass(design, rendered):
+    """The verdict counts the landings that fail Sec. II (recomputed here from the stored peaks), exits 1
+    and never opens with the checks' pass."""
+    status, stdout, html, summary = rendered
+    failing = [r for r in design.landings.rows if not _meets_sec_ii(r)]
+    assert [r["run_id"] for r in failing] == [r["run_id"] for r in design.landings.failing]
+    assert failing                                   # measured: all 24 (onset above 1,000 g/s on axis 1)
+    assert status == 1 and summary["ok"] is False and summary["landings_ok"] is False
+    assert stdout.startswith(f"3457: FAIL: ") and f"{len(failing)} of 24 landings fail their criteria" in stdout
+    result = html.split("Result:")[1].split("</p>")[0]
+    assert 'class="fail"' in result and "PASS" not in result
+    assert [l["criteria_ok"] for l in summary["landings"]] == [_meets_sec_ii(r) for r in design.landings.rows]
+
+
+def test_the_report_defines_every_landing_and_names_the_governing_one(design, rendered):
+    """A landing section with each case's conditions, outcome, peaks and criteria; every landing a load
+    table names links to its row and carries its outcome and conditions."""
+    _, _, html, _ = rendered
+    section = html.split('<h2 id="landings">')[1].split("<h2")[0]
+    for r in design.landings.rows:
+        row = section.split(f'<tr id="landing-{r["run_id"]}">')[1].split("</tr>")[0]
+        assert r["outcome_class"].replace("_", " ") in row and "35.0 ft/s down, 15.0 ft/s across" in row
+        assert f"{r['peak_xdd3_g']:.2f}" in row and ("fails" in row) == (not _meets_sec_ii(r))
+    governing = {ref.extreme.configuration.removeprefix(LANDING) for ref in design.load_refs
+                 if ref.extreme and ref.extreme.configuration.startswith(LANDING)}
+    assert governing                                  # landing 3-03 governs PU1 (see above)
+    for run_id in governing:
+        outcome = next(r["outcome_class"] for r in design.landings.rows if r["run_id"] == run_id)
+        assert f'<a href="#landing-{run_id}">landing {run_id}</a> ({outcome.replace("_", " ")}; slope' in html
+
+
+def test_landings_declared_as_load_cases_only_say_so_and_pass_on_the_checks(tmp_path):
+    """role = "load_cases": the same failing landings are reported, the page says plainly that they are load
+    cases only, and the design passes on its checks (exit 0)."""
+    import subprocess
+    import sys
+    shutil.copytree(EXAMPLES, tmp_path / "ex")
+    cfg = tmp_path / "ex" / CONFIG.name
+    cfg.write_text(CONFIG.read_text().replace('envelopes = ["3457"]', 'envelopes = ["3457"]\nrole = "load_cases"'))
+    r = subprocess.run([sys.executable, "-m", "alightsize", "design", str(cfg), "--out", str(tmp_path / "o")],
+                       capture_output=True, text=True)
+    assert r.returncode == 0 and "landings used as load cases only" in r.stdout
+    html = (tmp_path / "o" / "report.html").read_text()
+    assert "These landings are load cases only" in html and 'fail">fails</span>' in html
