@@ -1,4 +1,4 @@
-"""Command line: `alightsize design | audit | loads | simulate | sweep | bench | scale | reports` (see CONTRACTS.md). Exit 0 ok, 1 check failed,
+"""Command line: `alightsize design | audit | loads | simulate | sweep | bench | scale | reports` (see docs/contracts.md). Exit 0 ok, 1 check failed,
 2 bad input, 3 internal error."""
 
 from __future__ import annotations

@@ -228,7 +228,7 @@ def _drop_context(e: dict) -> dict:
             "error": _pct(t["simulated"]["energy_error_rel"]),
             "printed_error": {src: _pct(t[src]["printed_energy_error_rel"]) if src in t else "-"
                               for src in SOURCES[1:]},
-            # released energy: kinetic at first contact + potential change (CONTRACTS.md, alightsize.simulate/1)
+            # released energy: kinetic at first contact + potential change (docs/contracts.md, alightsize.simulate/1)
             "released": _ftlb(en["initial_J"] + en["potential_change_J"]), "closure": f"{en['closure_rel']:.1e}",
             "peak_xdd": ", ".join(f"{v:.1f}" for v in e["peak"]["xdd_g"]),
             "peak_omd": ", ".join(f"{v:,.0f}" for v in e["peak"]["omd_rad_s2"]),

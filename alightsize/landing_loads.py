@@ -126,7 +126,7 @@ def quasi_static_load(landings: Landings, envelope: str, member: str, sense: str
 
 
 def landings_json(landings: Landings) -> list[dict]:
-    """design summary.json `landings` (CONTRACTS.md): scene, conditions, outcome, criteria, peak and energy per
+    """design summary.json `landings` (docs/contracts.md): scene, conditions, outcome, criteria, peak and energy per
     landing case."""
     out = []
     for r, c in zip(landings.rows, landings.conditions):

@@ -1,4 +1,4 @@
-"""One landing's results as CONTRACTS.md asks: summary.json (alightsize.simulate/1), history.parquet and plots
+"""One landing's results as docs/contracts.md asks: summary.json (alightsize.simulate/1), history.parquet and plots
 (XDD and OMD against time as Figs. 33-38, cell strokes, the energy balance, the shock spectrum of XDD(3) as
 Fig. 39)."""
 
@@ -34,7 +34,7 @@ def energies(cfg: SceneConfig, res: Result) -> tuple[np.ndarray, np.ndarray]:
 
 
 def outcome(cfg: SceneConfig, res: Result) -> tuple[str, str]:
-    """(outcome, reason) per CONTRACTS.md from the loop's status."""
+    """(outcome, reason) per docs/contracts.md from the loop's status."""
     if res.bottomed is not None:
         t, leg, cell = res.bottomed
         return "bottomed", f"leg {leg + 1} {cfg.cell_names[leg][cell]} cell stroked past its crushing plateau at {t:.4f} s"
@@ -89,7 +89,7 @@ def summary(cfg: SceneConfig, res: Result) -> dict:
 
 
 def history_frame(cfg: SceneConfig, res: Result) -> pd.DataFrame:
-    """The history table of CONTRACTS.md (SI, unit-suffixed columns), at every accepted step or resampled
+    """The history table of docs/contracts.md (SI, unit-suffixed columns), at every accepted step or resampled
     at the scene's output interval."""
     xdd, omd = body_histories(cfg, res)
     E = cfg.to_geometric

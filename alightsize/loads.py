@@ -55,7 +55,7 @@ def _extreme_json(e: Extreme | None, key: str, combined: bool) -> dict:
 
 
 def loads_json(res: LoadsResult) -> dict:
-    """max_member_loads.json (CONTRACTS.md, alightsize.loads/1)."""
+    """max_member_loads.json (docs/contracts.md, alightsize.loads/1)."""
     confs = {name: [{"member": r.member, **_extreme_json(r.tension, "tension", name in res.combined),
                      **_extreme_json(r.compression, "compression", name in res.combined)} for r in rows]
              for name, rows in res.envelopes.items()}

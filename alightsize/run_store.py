@@ -1,4 +1,4 @@
-"""The run store of a sweep: SQLite in WAL mode at DIR/runs.sqlite (CONTRACTS.md), one row per run.
+"""The run store of a sweep: SQLite in WAL mode at DIR/runs.sqlite (docs/contracts.md), one row per run.
 
 Each finished run is committed on its own, so Ctrl-C, kill -9 or a dying worker loses no finished run; a
 re-run skips the runs stored `done` with the same inputs hash, whatever their id (alightsize.sweep). Columns are added as a study needs them

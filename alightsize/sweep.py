@@ -47,7 +47,7 @@ def task_of(study: Study, run: Run, out: Path, truss=None) -> dict:
 
 
 def _figures(s: dict) -> dict:
-    """The summary figures of one landing as flat, unit-suffixed columns (CONTRACTS.md)."""
+    """The summary figures of one landing as flat, unit-suffixed columns (docs/contracts.md)."""
     row = {"outcome": s["outcome"], "reason": s["reason"], "t_end_s": s["t_end_s"]}
     for name, key, unit in (("xdd", "xdd_g", "g"), ("omd", "omd_rad_s2", "rad_s2"), ("onset_xdd", "onset_g_s", "g_s")):
         for i, v in enumerate(s["peak"][key]):
