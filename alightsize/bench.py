@@ -17,9 +17,9 @@ from pathlib import Path
 import numpy as np
 from scipy import integrate, optimize
 
-from sim import landing_kernel as lk
-from sim.articulated_leg import ArticulatedLeg
-from sim.landing import Controls, Result, _Run, accel_g, initial_state, simulate
+from alightsize_sim import landing_kernel as lk
+from alightsize_sim.articulated_leg import ArticulatedLeg
+from alightsize_sim.landing import Controls, Result, _Run, accel_g, initial_state, simulate
 
 from .atomic import write_atomic
 from .scene_config import SceneConfig, read_scene

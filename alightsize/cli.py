@@ -62,7 +62,7 @@ def _loads(args) -> int:
 def _simulate(args) -> int:
     from .landing_output import summary, write_landing
     from .scene_config import read_scene
-    from sim.landing import simulate
+    from alightsize_sim.landing import simulate
     cfg = read_scene(args.scene)
     res = simulate(cfg.scene, cfg.controls)
     files = write_landing(cfg, res, Path(args.out))

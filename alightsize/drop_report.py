@@ -23,7 +23,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from sim.landing import Result, simulate  # noqa: E402
+from alightsize_sim.landing import Result, simulate  # noqa: E402
 
 from . import __version__, drop_tables, units  # noqa: E402
 from .atomic import write_atomic  # noqa: E402

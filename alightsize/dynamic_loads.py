@@ -7,16 +7,16 @@ from those cell forces (eq. 59-61) and sweep a grid of (alpha, beta, psi). Here 
 functions (`articulated_statics.reactions`, eq. 53-61 and 98-100, then `member_loads`, eq. 101-106) are
 evaluated at every accepted step of a simulated landing, for every articulated leg on the ground.
 
-Taken from the history (`sim.landing.Result`): the capsule state y, the contact flags, the footpad
+Taken from the history (`alightsize_sim.landing.Result`): the capsule state y, the contact flags, the footpad
 positions, the upper cell force AF1 (`forces[..., 0]`: the loading curve while the cell crushes, the
 unloading spring and damper below its maximum), the lower cell force (`forces[..., 1]`, likewise) and the
 ground force (`leg_force`, turned into the leg's S axes as L^T X). Recomputed: the leg's shape
-(alpha, beta, psi), which the Result does not keep, by the simulator's own `sim.legs.leg_force` from the
+(alpha, beta, psi), which the Result does not keep, by the simulator's own `alightsize_sim.legs.leg_force` from the
 stored footpad and state, the root seeded with the previous step's shape as the step loop seeds it (the
 cells' memory enters only the forces, which are discarded); the recovered shape must reproduce the
 history's cell deflections. The leg is massless, so wherever the peg leg is off its seat the history's
 ground force is eq. 59-61 of the history's cell forces (AF2 = lower cell + return spring) to round-off.
-On the seat (alpha < `sim.articulated_leg.SEAT`) the simulator blends toward FORCE's vertical force from
+On the seat (alpha < `alightsize_sim.articulated_leg.SEAT`) the simulator blends toward FORCE's vertical force from
 the upper cell alone; there the lower-cell line force AF2 used is the one that, with the history's AF1,
 gives exactly the simulated ground force (the ground force is linear in AF2), i.e. the seat's reaction is
 lumped with the lower cell. Off the seat that AF2 equals the history's. The member loads therefore balance
@@ -33,12 +33,12 @@ from math import degrees
 
 import numpy as np
 
-from sim.articulated_cells import return_spring_force
-from sim.articulated_leg import ArticulatedLeg
-from sim.articulated_statics import MEMBERS, Reactions, TrussAngles, ground_force, member_loads, reactions
-from sim.landing import Result, Scene
-from sim.legs import initial_shape, leg_force, lift_shape, pack
-from sim.rigid_body import quat_matrix
+from alightsize_sim.articulated_cells import return_spring_force
+from alightsize_sim.articulated_leg import ArticulatedLeg
+from alightsize_sim.articulated_statics import MEMBERS, Reactions, TrussAngles, ground_force, member_loads, reactions
+from alightsize_sim.landing import Result, Scene
+from alightsize_sim.legs import initial_shape, leg_force, lift_shape, pack
+from alightsize_sim.rigid_body import quat_matrix
 
 from .scene_config import SceneConfig
 

@@ -10,9 +10,9 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from sim import crush_cell
-from sim.landing import Result, kinetic
-from sim.rigid_body import quat_matrix, roll_yaw_pitch
+from alightsize_sim import crush_cell
+from alightsize_sim.landing import Result, kinetic
+from alightsize_sim.rigid_body import quat_matrix, roll_yaw_pitch
 
 from .atomic import write_atomic
 from .scene_config import SceneConfig

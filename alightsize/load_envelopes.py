@@ -14,10 +14,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from sim.articulated_cells import lower_deflection, return_spring_force, upper_deflection
-from sim.articulated_kinematics import ArticulatedGeometry
-from sim.articulated_statics import MEMBERS, TrussAngles, member_loads, reactions
-from sim.crush_curve import CrushCurve
+from alightsize_sim.articulated_cells import lower_deflection, return_spring_force, upper_deflection
+from alightsize_sim.articulated_kinematics import ArticulatedGeometry
+from alightsize_sim.articulated_statics import MEMBERS, TrussAngles, member_loads, reactions
+from alightsize_sim.crush_curve import CrushCurve
 
 
 @dataclass(frozen=True)

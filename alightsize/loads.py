@@ -6,7 +6,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from math import degrees
 
-from sim.articulated_statics import MEMBERS
+from alightsize_sim.articulated_statics import MEMBERS
 
 from .config import Node
 from .errors import InputError

@@ -10,9 +10,9 @@ from pathlib import Path
 
 import numpy as np
 
-from sim.articulated_kinematics import ArticulatedGeometry
-from sim.articulated_statics import TrussAngles
-from sim.crush_curve import CrushCurve
+from alightsize_sim.articulated_kinematics import ArticulatedGeometry
+from alightsize_sim.articulated_statics import TrussAngles
+from alightsize_sim.crush_curve import CrushCurve
 
 from .config import Node, load_toml
 from .load_envelopes import Grid, LegCase, default_grid

@@ -14,7 +14,7 @@ import numpy as np  # noqa: E402
 from openpyxl import Workbook  # noqa: E402
 from openpyxl.styles import Font  # noqa: E402
 
-from sim.articulated_statics import MEMBERS  # noqa: E402
+from alightsize_sim.articulated_statics import MEMBERS  # noqa: E402
 
 from .atomic import write_atomic  # noqa: E402
 from .load_envelopes import Extreme, member_fields  # noqa: E402

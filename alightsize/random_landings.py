@@ -9,8 +9,8 @@ import dataclasses
 
 import numpy as np
 
-from sim.landing import Scene
-from sim.rigid_body import axis_rotation, matrix_quat, quat_matrix
+from alightsize_sim.landing import Scene
+from alightsize_sim.rigid_body import axis_rotation, matrix_quat, quat_matrix
 
 FT = 0.3048
 

@@ -14,11 +14,11 @@ from pathlib import Path
 
 import numpy as np
 
-from sim.crush_cell import CellModel
-from sim.landing import G0, Controls, Scene
-from sim.rigid_body import matrix_quat
-from sim.articulated_leg import ArticulatedLeg
-from sim.telescoping_leg import TelescopingLeg
+from alightsize_sim.crush_cell import CellModel
+from alightsize_sim.landing import G0, Controls, Scene
+from alightsize_sim.rigid_body import matrix_quat
+from alightsize_sim.articulated_leg import ArticulatedLeg
+from alightsize_sim.telescoping_leg import TelescopingLeg
 
 from .config import Node, load_toml
 from .loads_config import LENGTHS, read_curve, read_geometry

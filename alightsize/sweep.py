@@ -72,7 +72,7 @@ def _inputs(task: dict) -> dict:
 
 def execute(task: dict) -> dict:
     """One run: read its scene, land it, summarize. Any exception becomes a `failed` row with its message."""
-    from sim.landing import simulate
+    from alightsize_sim.landing import simulate
     from .atomic import write_atomic
     from .landing_output import history_frame, summary
     from .scene_config import read_scene

@@ -3,7 +3,7 @@ eq. 89-95, subroutine QUIMOT; the quiescence test of the main program, statement
 
 All functions take floats and numpy arrays only and are compiled with numba (NUMBA_DISABLE_JIT=1 runs
 them as plain Python). SI units; terrain axes (epsilon) unless stated; ``R`` takes principal-axis (eta)
-components to terrain components, as in `sim.landing`.
+components to terrain components, as in `alightsize_sim.landing`.
 
 Energy criterion (eq. 89-95)
 ----------------------------

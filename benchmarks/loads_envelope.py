@@ -23,7 +23,7 @@ import numpy as np  # noqa: E402
 
 from alightsize.load_envelopes import cell_forces, envelope  # noqa: E402
 from alightsize.loads_config import read_loads  # noqa: E402
-from sim.articulated_statics import reactions  # noqa: E402
+from alightsize_sim.articulated_statics import reactions  # noqa: E402
 
 CONFIG = Path(__file__).resolve().parent.parent / "examples" / "affdl-tr-66-33" / "loads" / "articulated.toml"
 

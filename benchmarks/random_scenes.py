@@ -22,7 +22,7 @@ import numpy as np
 
 from alightsize.random_landings import random_landing
 from alightsize.scene_config import read_scene
-from sim.landing import simulate
+from alightsize_sim.landing import simulate
 
 BASE = Path(__file__).resolve().parent.parent / "examples" / "affdl-tr-66-33" / "scenes" / "telescoping_config1.toml"
 SEED = 20261121

@@ -65,10 +65,10 @@ sys.path[:0] = [str(ROOT), str(ROOT / "tests")]
 
 import reference_tables_14_22 as ref  # noqa: E402
 from alightsize.load_envelopes import Grid, LegCase, cell_forces, default_grid, member_fields  # noqa: E402
-from sim.articulated_cells import lower_deflection, lower_lever, upper_deflection, upper_lever  # noqa: E402
-from sim.articulated_kinematics import ArticulatedGeometry  # noqa: E402
-from sim.articulated_statics import TrussAngles, member_loads, reactions  # noqa: E402
-from sim.crush_curve import CrushCurve  # noqa: E402
+from alightsize_sim.articulated_cells import lower_deflection, lower_lever, upper_deflection, upper_lever  # noqa: E402
+from alightsize_sim.articulated_kinematics import ArticulatedGeometry  # noqa: E402
+from alightsize_sim.articulated_statics import TrussAngles, member_loads, reactions  # noqa: E402
+from alightsize_sim.crush_curve import CrushCurve  # noqa: E402
 
 IN = 0.0254
 FT = 0.3048

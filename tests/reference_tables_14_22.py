@@ -3,7 +3,7 @@ cell force-deflection curves of configurations 3-9 (Sec. IV).
 
 Transcribed from /work/shared/reference/000_9b9e1976ecb8d0f1.txt ("l." = line of that file), values as
 printed (lbf, degrees). Each row is (member, load lbf, alpha deg, beta deg, psi deg); tension positive.
-Member names are those of `sim.articulated_statics.MEMBERS`. The tables label the pairs PL1/(PL3),
+Member names are those of `alightsize_sim.articulated_statics.MEMBERS`. The tables label the pairs PL1/(PL3),
 PL2/(PL6), PU1/(PU2) and the OCR or the typesetter garbles several labels; they are mapped by row order:
 
 - row 1-2 "PL1,(PL5)" (T14), "PL2,(PL3)" (T16, T20) -> PL1;

@@ -5,7 +5,7 @@ import pytest
 
 from alightsize.loads_config import read_loads
 from conftest import EXAMPLES
-from sim.articulated_kinematics import (ArticulatedGeometry, Unreachable, footpad, inverse, nearest_root, residual,
+from alightsize_sim.articulated_kinematics import (ArticulatedGeometry, Unreachable, footpad, inverse, nearest_root, residual,
                                        roots)
 
 IN = 0.0254
@@ -55,7 +55,7 @@ def test_unreachable_point_is_an_error_not_nan():
 def _crossing(g, alpha, beta, psi):
     """Signed gap between sin(alpha) and the nearest other root of the eq. 41 quartic in [0, 1] (NaN if
     none): a sign change along a path is a crossing of the true root by an extraneous one."""
-    from sim.articulated_kinematics import quartic
+    from alightsize_sim.articulated_kinematics import quartic
     r = np.roots(quartic(g, footpad(g, alpha, beta, psi)))
     r = r[np.abs(r.imag) < 1e-9].real
     true = np.argmin(np.abs(r - np.sin(alpha)))

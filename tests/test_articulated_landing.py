@@ -13,11 +13,11 @@ import pytest
 from alightsize.landing_output import outcome
 from alightsize.scene_config import read_scene
 from alightsize.study import agrees, outcome_class, read_study
-from sim import articulated_leg
-from sim.articulated_cells import upper_length
-from sim.articulated_kinematics import footpad, nearest_root, roots
-from sim.landing import simulate
-from sim.legs import pack
+from alightsize_sim import articulated_leg
+from alightsize_sim.articulated_cells import upper_length
+from alightsize_sim.articulated_kinematics import footpad, nearest_root, roots
+from alightsize_sim.landing import simulate
+from alightsize_sim.legs import pack
 
 EX = Path(__file__).resolve().parents[1] / "examples" / "affdl-tr-66-33"
 SCENES = sorted((EX / "scenes").glob("articulated_*.toml"))

@@ -5,9 +5,9 @@ import numpy as np
 import pytest
 
 from alightsize.loads_config import read_loads
-from sim.articulated_cells import lower_deflection, upper_deflection
-from sim.articulated_kinematics import footpad
-from sim.articulated_statics import member_loads, reactions, residuals
+from alightsize_sim.articulated_cells import lower_deflection, upper_deflection
+from alightsize_sim.articulated_kinematics import footpad
+from alightsize_sim.articulated_statics import member_loads, reactions, residuals
 
 from conftest import EXAMPLES
 
@@ -82,7 +82,7 @@ def test_envelopes_follow_the_scaling_laws():
     from dataclasses import replace
     from alightsize.load_envelopes import envelope
     from alightsize.loads_config import LENGTHS
-    from sim.crush_curve import CrushCurve
+    from alightsize_sim.crush_curve import CrushCurve
     L, F = 1.825 / 4, 0.1                      # F arbitrary (the 300 lb capsule: mass ratio 0.1)
     case = CFG.cases[0]
     g = case.geometry._replace(**{k: L * getattr(case.geometry, k) for k in LENGTHS}, PLD=F * case.geometry.PLD,

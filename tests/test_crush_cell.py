@@ -4,9 +4,9 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from sim import crush_cell as cc
-from sim.crush_cell import CellModel
-from sim.crush_curve import CrushCurve
+from alightsize_sim import crush_cell as cc
+from alightsize_sim.crush_cell import CellModel
+from alightsize_sim.crush_curve import CrushCurve
 
 CURVE = CrushCurve((0.0, 0.02, 0.30, 0.35), (0.0, 30_000.0, 30_000.0, 60_000.0))
 K = 5e6

@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from sim import crush_cell
+from alightsize_sim import crush_cell
 
 from alightsize.drop_report import FT, FT_LB, compare, run_drop
 from alightsize.landing_output import outcome

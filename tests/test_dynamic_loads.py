@@ -9,12 +9,12 @@ from alightsize.dynamic_loads import dynamic_envelope, leg_histories, member_his
 from alightsize.load_envelopes import cell_forces
 from alightsize.loads_config import read_loads
 from alightsize.scene_config import read_scene
-from sim.articulated_cells import lower_deflection, lower_force_components, upper_deflection
-from sim.articulated_kinematics import footpad
-from sim.articulated_leg import SEAT
-from sim.articulated_statics import MEMBERS, member_loads, reactions, residuals
-from sim.landing import simulate
-from sim.rigid_body import quat_matrix
+from alightsize_sim.articulated_cells import lower_deflection, lower_force_components, upper_deflection
+from alightsize_sim.articulated_kinematics import footpad
+from alightsize_sim.articulated_leg import SEAT
+from alightsize_sim.articulated_statics import MEMBERS, member_loads, reactions, residuals
+from alightsize_sim.landing import simulate
+from alightsize_sim.rigid_body import quat_matrix
 
 from conftest import EXAMPLES
 

@@ -3,11 +3,11 @@
 import numpy as np
 import pytest
 
-from sim.crush_cell import CellModel
-from sim.crush_curve import CrushCurve
-from sim.landing import Controls, Scene, simulate
-from sim.rigid_body import axis_rotation, matrix_quat
-from sim.telescoping_leg import TelescopingLeg
+from alightsize_sim.crush_cell import CellModel
+from alightsize_sim.crush_curve import CrushCurve
+from alightsize_sim.landing import Controls, Scene, simulate
+from alightsize_sim.rigid_body import axis_rotation, matrix_quat
+from alightsize_sim.telescoping_leg import TelescopingLeg
 
 G = 9.80665
 CURVE = CrushCurve((0.0, 0.02, 0.30, 0.35), (0.0, 30_000.0, 30_000.0, 60_000.0))     # N vs m

@@ -13,8 +13,8 @@ from alightsize.cli import main
 from alightsize.landing_output import history_frame
 from alightsize.random_landings import random_landing
 from alightsize.scene_config import read_scene
-from sim.landing import G0, simulate
-from sim.rigid_body import quat_matrix
+from alightsize_sim.landing import G0, simulate
+from alightsize_sim.rigid_body import quat_matrix
 
 SCENES = "examples/affdl-tr-66-33/scenes"
 N_RANDOM = int(os.environ.get("ALIGHTSIZE_RANDOM_SCENES", "3"))   # issue 4 asks 1,000: see docs/simulator.md
@@ -88,8 +88,8 @@ def test_footpad_path_error_falls_as_the_step_squared():
     second order: with the slide and the turn both proportional to h, halving the step quarters it. Run
     12101's sliding leg 1 at 0.033 s, one Dormand-Prince step of 1e-4 and of 5e-5 s: ratio 4 within 0.7
     (measured 3.8; the turn is not yet exactly linear in h at 1e-4 s: 2.9 from 2e-4 s)."""
-    from sim import landing_kernel as lk
-    from sim.landing import _Run, initial_state
+    from alightsize_sim import landing_kernel as lk
+    from alightsize_sim.landing import _Run, initial_state
     cfg = read_scene(f"{SCENES}/telescoping_config1_run12101.toml")
     s = cfg.scene
     run = _Run(s, dataclasses.replace(cfg.controls, t_final=0.033, energy_check_from=None, taus=0.0))

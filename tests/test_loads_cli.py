@@ -13,7 +13,7 @@ from alightsize.cli import main
 from alightsize.load_envelopes import member_fields
 from alightsize.loads import run_loads
 from alightsize.loads_config import read_loads
-from sim.articulated_statics import MEMBERS
+from alightsize_sim.articulated_statics import MEMBERS
 
 from conftest import EXAMPLES
 

@@ -13,8 +13,8 @@ import pytest
 from alightsize.load_envelopes import cell_forces
 from alightsize.loads import run_loads
 from alightsize.loads_config import read_loads
-from sim.articulated_cells import lower_lever, upper_lever
-from sim.articulated_statics import member_loads, reactions
+from alightsize_sim.articulated_cells import lower_lever, upper_lever
+from alightsize_sim.articulated_statics import member_loads, reactions
 
 from conftest import EXAMPLES
 from reference_tables_14_22 import CELL_CURVES, MAGNITUDE_ONLY, SUSPECTED_MISPRINTS, TABLES
@@ -134,7 +134,7 @@ def test_fig_10_parallelogram_alone_is_reachable_but_contradicts_the_tables():
     # before +30 deg, while Tables 14 and 15 print the same +30 deg loads (R11 48,759) as for a cell still
     # crushing at 36,000 lbf. Hence the shipped geometry follows the tables (docs/articulated-geometry.md).
     from scipy.optimize import least_squares
-    from sim.articulated_cells import upper_deflection
+    from alightsize_sim.articulated_cells import upper_deflection
     g0 = read_loads(LOADS).cases[0].geometry
     IN = 0.0254
 

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
-from sim.rigid_body import axis_rotation, euler_rates, free_flight, matrix_quat, quat_matrix, quat_rate, roll_yaw_pitch
+from alightsize_sim.rigid_body import axis_rotation, euler_rates, free_flight, matrix_quat, quat_matrix, quat_rate, roll_yaw_pitch
 
 INERTIA = np.array([3.326, 3.326, 2.77])     # slug ft^2 numbers of the test model (App. VI), units immaterial
 

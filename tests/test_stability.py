@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 from scipy.optimize import minimize_scalar
 
-from sim import stability as st
+from alightsize_sim import stability as st
 
 G = 9.80665
 M = 120.0

@@ -5,7 +5,7 @@ import pytest
 
 from alightsize.loads_config import read_loads
 from alightsize.telescoping_loads import free_body, side_loads, sliding_loads
-from sim.telescoping_kinematics import footpad, pad_deflection, spherical
+from alightsize_sim.telescoping_kinematics import footpad, pad_deflection, spherical
 
 from conftest import EXAMPLES
 
