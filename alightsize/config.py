@@ -9,7 +9,7 @@ from pathlib import Path
 from typing import Any
 
 from . import units
-from .errors import InputError
+from .errors import InputError, warn_input
 
 _MISSING = object()
 _INDEXED = re.compile(r"(\w+)\[(\d+)\]")
@@ -56,6 +56,10 @@ class Node:
 
     def error(self, name: str, expected: str, found: str) -> InputError:
         return InputError(self.file, self.key(name), expected, found)
+
+    def warn(self, name: str, message: str) -> None:
+        """Warn about a legal but suspicious value at key `name` (an InputWarning naming file and key path)."""
+        warn_input(self.file, self.key(name), message)
 
     def has(self, name: str) -> bool:
         return name in self.data

@@ -52,13 +52,20 @@ class Item:
         return replace(self, section=section)
 
 
-def _read_size(node: Node, section: Section | None) -> SizeSpec:
+def _read_size(node: Node, section: Section | None, checks: tuple[Check, ...]) -> SizeSpec:
+    """The size table; refused when a printed property or a check's own value would not follow the size."""
     if section is None:
         raise node.error("dimension", "an item with a [section] to size", "no section")
     if section.overrides:
         raise node.error("dimension", "a section without printed area/inertia/c overrides (they would not follow the size)",
                          ", ".join(section.overrides))
     dim = node.string("dimension", choices=tuple(section.dims))
+    for check in checks:
+        key = next((k for k, d in check.replaces.items() if d == dim), None)
+        if key is not None:
+            raise node.error("dimension", f"a dimension no check gives its own value for ({check.where}.{key} would "
+                             f"keep its value while the {dim} is sized: remove it, or size another dimension)",
+                             repr(dim))
     gauges = tuple(sorted(node.parse_quantity("gauges", g, "length") for g in node.raw("gauges", [])))
     if gauges:
         low, high = gauges[0], gauges[-1]
@@ -82,7 +89,7 @@ def read_item(node: Node, materials: dict[str, Material], required_default: floa
     w_node = node.table("weight", optional=True)
     weight = read_weight(w_node, materials) if w_node else None
     s_node = node.table("size", optional=True)
-    size = _read_size(s_node, section) if s_node else None
+    size = _read_size(s_node, section, checks) if s_node else None
     note = node.string("note", "")
     node.finish()
     if not checks and weight is None:
