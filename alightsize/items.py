@@ -5,11 +5,12 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 from math import inf
 
+from . import units
 from .checks import Check, Outcome, read_check, KINDS
 from .config import Node
 from .errors import InputError
 from .materials import Material, lookup, require
-from .sections import SHAPES, Section, read_section
+from .sections import SHAPES, Section, geometry_error, read_section
 from .weights import WeightSpec, read_weight
 
 
@@ -73,6 +74,13 @@ def _read_size(node: Node, section: Section | None, checks: tuple[Check, ...]) -
         low, high = node.quantity("min", "length"), node.quantity("max", "length")
         if low >= high:
             raise node.error("max", "max greater than min", f"min {low:g} m, max {high:g} m")
+    for key, value in (("gauges" if gauges else "min", low), ("gauges" if gauges else "max", high)):
+        problem = geometry_error(section.with_dim(dim, value))
+        if problem:
+            written = node.raw(key)[0] if gauges else node.raw(key)     # lengths shown in the unit written here
+            others = ", ".join(f"{n} {units.in_unit_of(v, written)}" for n, v in section.dims.items() if n != dim)
+            raise node.error(key, f"sizes that keep a real section: {problem[1]}",
+                             f"{dim} {units.in_unit_of(value, written)} with {others}")
     node.finish()
     return SizeSpec(dim, low, high, gauges)
 

@@ -85,6 +85,18 @@ _DERIVED = {
 OVERRIDE_TOLERANCE = 0.10
 
 
+def geometry_error(section: Section) -> tuple[str, str] | None:
+    """(dimension, expected) when the dimensions describe no real section: a tube wall of half its outside
+    diameter or more (no bore: A = pi d t and I = pi r^3 t would be taken on a mean diameter below the wall),
+    a plate's inner diameter as large as its diameter. Rods and rectangles only need positive sizes."""
+    d = section.dims
+    if section.shape == "tube" and "outside_diameter" in d and d["wall"] >= d["outside_diameter"] / 2:
+        return "wall", "a wall less than half the outside diameter (an inside diameter above 0)"
+    if section.shape == "plate" and d.get("inner_diameter", 0.0) >= d["diameter"]:
+        return "inner_diameter", "an inner diameter less than the diameter"
+    return None
+
+
 def _check_overrides(node: Node, section: Section) -> None:
     """Warn where a printed property does not match the section's own dimensions (OVERRIDE_TOLERANCE)."""
     for name, printed in section.overrides.items():
@@ -117,5 +129,8 @@ def read_section(node: Node) -> Section:
     overrides = {n: node.quantity(n, _OVERRIDE_DIMS[n]) for n in overridable if node.has(n)}
     node.finish()
     section = Section(shape, dims, overrides)
+    problem = geometry_error(section)
+    if problem:
+        raise node.error(problem[0], problem[1], ", ".join(f"{n} {node.raw(n)}" for n in dims))
     _check_overrides(node, section)
     return section

@@ -87,3 +87,51 @@ def test_sizing_a_wall_that_a_check_overrides_exits_2(tmp_path):
            "(item[3].check[1].wall would keep its value while the wall is sized" in r.stderr
     assert r.stderr.rstrip().endswith("found 'wall'")
     assert not (tmp_path / "out").exists()
+
+
+_ITEM = '''[design]
+configuration = "x"
+
+[[item]]
+name = "Strut"
+material = "7178-t6"
+section = {section}
+{size}
+  [[item.check]]
+  kind = "{kind}"
+  {params}
+'''
+_TUBE_CHECKS = dict(kind="column_buckling", params='load = "1000 lbf"\n  length = "10 in"', size="")
+
+
+@pytest.mark.parametrize("fields, key, expected, found", [
+    # wall past the radius: with a printed I, sqrt(I / A) of a negative A was "math domain error"
+    (dict(_TUBE_CHECKS, section='{ shape = "tube", outside_diameter = "1 in", wall = "0.6 in", inertia = "0.1 in^4" }'),
+     "section.wall", "a wall less than half the outside diameter", "outside_diameter 1 in, wall 0.6 in"),
+    (dict(_TUBE_CHECKS, section='{ shape = "tube", outside_diameter = "1 in", wall = "0.5 in" }'),
+     "section.wall", "a wall less than half the outside diameter", "outside_diameter 1 in, wall 0.5 in"),
+    (dict(kind="plate_annular_uniform_pressure", params='pressure = "100 psi"', size="",
+          section='{ shape = "plate", diameter = "3.14 in", inner_diameter = "3.14 in", thickness = "0.88 in" }'),
+     "section.inner_diameter", "an inner diameter less than the diameter", "inner_diameter 3.14 in"),
+    (dict(_TUBE_CHECKS, section='{ shape = "tube", outside_diameter = "1 in", wall = "0.1 in" }',
+          size='size = { dimension = "wall", min = "0.01 in", max = "0.6 in" }'),
+     "size.max", "sizes that keep a real section: a wall less than half the outside diameter",
+     "wall 0.6 in with outside_diameter 1 in"),
+    (dict(_TUBE_CHECKS, section='{ shape = "tube", outside_diameter = "1 in", wall = "0.1 in" }',
+          size='size = { dimension = "outside_diameter", gauges = ["0.5 in", "0.2 in", "1 in"] }'),
+     "size.gauges", "a wall less than half the outside diameter", "outside_diameter 0.2 in with wall 0.1 in"),
+    (dict(kind="tension", params='load = "1000 lbf"', size="", section='{ shape = "rod", diameter = "0 in" }'),
+     "section.diameter", "a positive length", "'0 in'"),
+    (dict(kind="bending", params='moment = "100 lbf*in"', size="",
+          section='{ shape = "rectangle", width = "1 in", height = "-2 in" }'),
+     "section.height", "a positive length", "'-2 in'"),
+])
+def test_impossible_section_exits_2_naming_key_expected_found(tmp_path, fields, key, expected, found):
+    cfg = tmp_path / "bad.toml"
+    cfg.write_text(_ITEM.format(**fields))
+    r = run("design", cfg, "--out", tmp_path / "out")
+    assert r.returncode == 2, r.stderr
+    assert "Traceback" not in r.stderr and "math domain error" not in r.stderr
+    message = r.stderr.strip()
+    assert message.startswith(f"alightsize: error: {cfg}: item[0].{key}: expected ") and "\n" not in message
+    assert expected in message and found in message.split(", found ", 1)[1]
