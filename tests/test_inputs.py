@@ -135,3 +135,25 @@ def test_impossible_section_exits_2_naming_key_expected_found(tmp_path, fields, 
     message = r.stderr.strip()
     assert message.startswith(f"alightsize: error: {cfg}: item[0].{key}: expected ") and "\n" not in message
     assert expected in message and found in message.split(", found ", 1)[1]
+
+
+SCENES = EXAMPLES / "scenes"
+
+
+@pytest.mark.parametrize("v3", ["2 m/s", "0.1 ft/s"])
+def test_upward_initial_velocity_warns_and_is_kept(v3):
+    from alightsize.scene_config import read_scene
+    scene = SCENES / "flat_drop.toml"
+    with pytest.warns(InputWarning) as caught:
+        cfg = read_scene(scene, {"initial.velocity[2]": v3})
+    assert [(w.message.file, w.message.key) for w in caught] == [(str(scene), "initial.velocity[2]")]
+    assert f"an upward initial velocity, V3 = {v3} " in str(caught[0].message)
+    assert cfg.scene.v0[2] > 0                        # simulated as given, not refused
+
+
+def test_shipped_scenes_descend_without_warnings():
+    from alightsize.scene_config import read_scene
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", InputWarning)
+        for scene in sorted(SCENES.glob("*.toml")):
+            read_scene(scene)
