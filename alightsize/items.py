@@ -92,7 +92,7 @@ def read_item(node: Node, materials: dict[str, Material], required_default: floa
     sec_node = node.table("section", optional=True)
     section = read_section(sec_node) if sec_node else None
     length = node.quantity("length", "length", default=None)
-    checks = tuple(read_check(c) for c in node.tables("check", optional=True))
+    checks = tuple(read_check(c) for c in node.tables("check", optional=True, label="kind"))
     required = node.number("required_design_factor", required_default)
     w_node = node.table("weight", optional=True)
     weight = read_weight(w_node, materials) if w_node else None

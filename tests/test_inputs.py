@@ -39,7 +39,7 @@ def test_printed_inertia_left_from_an_older_wall_warns_on_the_command_line(tmp_p
     assert r.returncode in (0, 1), r.stderr          # a warning, not an error: the printed value is used
     lines = [ln for ln in r.stderr.splitlines() if ln.startswith("alightsize: warning: ")]
     assert len(lines) == 1, r.stderr
-    assert f"{cfg}: item[0].section.inertia: " in lines[0]
+    assert f'{cfg}: item["Lower Leg Tube"].section.inertia: ' in lines[0]
     assert "0.478 in^4" in lines[0] and "0.6454 in^4" in lines[0] and "-25.9 %" in lines[0]
     assert "Traceback" not in r.stderr and "InputWarning" not in r.stderr
 
@@ -48,7 +48,7 @@ def test_printed_inertia_left_from_an_older_wall_is_a_python_warning(tmp_path):
     cfg = _stale_telescoping(tmp_path)
     with pytest.warns(InputWarning) as caught:
         read_design(cfg)
-    assert [(w.message.file, w.message.key) for w in caught] == [(str(cfg), "item[0].section.inertia")]
+    assert [(w.message.file, w.message.key) for w in caught] == [(str(cfg), 'item["Lower Leg Tube"].section.inertia')]
 
 
 @pytest.mark.parametrize("printed, warns", [("0.72 in^4", False), ("0.75 in^4", True)])
@@ -83,8 +83,9 @@ def test_sizing_a_wall_that_a_check_overrides_exits_2(tmp_path):
     r = run("design", cfg, "--out", tmp_path / "out")
     assert r.returncode == 2, r.stderr
     assert "Traceback" not in r.stderr
-    assert f"{cfg}: item[3].size.dimension: expected a dimension no check gives its own value for " \
-           "(item[3].check[1].wall would keep its value while the wall is sized" in r.stderr
+    assert f'{cfg}: item["Parallelogram Post"].size.dimension: expected a dimension no check gives its own ' \
+           'value for (item["Parallelogram Post"].check["local_buckling"].wall would keep its value while the ' \
+           'wall is sized' in r.stderr
     assert r.stderr.rstrip().endswith("found 'wall'")
     assert not (tmp_path / "out").exists()
 
@@ -133,7 +134,7 @@ def test_impossible_section_exits_2_naming_key_expected_found(tmp_path, fields, 
     assert r.returncode == 2, r.stderr
     assert "Traceback" not in r.stderr and "math domain error" not in r.stderr
     message = r.stderr.strip()
-    assert message.startswith(f"alightsize: error: {cfg}: item[0].{key}: expected ") and "\n" not in message
+    assert message.startswith(f'alightsize: error: {cfg}: item["Strut"].{key}: expected ') and "\n" not in message
     assert expected in message and found in message.split(", found ", 1)[1]
 
 
@@ -157,3 +158,26 @@ def test_shipped_scenes_descend_without_warnings():
         warnings.simplefilter("error", InputWarning)
         for scene in sorted(SCENES.glob("*.toml")):
             read_scene(scene)
+
+
+def test_key_paths_name_items_and_checks(tmp_path):
+    # checks by kind where it is unique in the item, by index where it is not (two bending checks here)
+    cfg = tmp_path / "bad.toml"
+    cfg.write_text(_ITEM.format(kind="bending", params='moment = "100 lbf*in"', size="",
+                                section='{ shape = "rectangle", width = "1 in", height = "2 in" }')
+                   + '  [[item.check]]\n  kind = "bending"\n  moment = "100 lbf"\n'
+                   + '  [[item.check]]\n  kind = "tension"\n  load = "100 lb"\n')
+    r = run("design", cfg, "--out", tmp_path / "out")
+    assert r.returncode == 2 and "Traceback" not in r.stderr
+    assert r.stderr.startswith(f'alightsize: error: {cfg}: item["Strut"].check[1].moment: expected a moment')
+    cfg.write_text(cfg.read_text().replace('moment = "100 lbf"', 'moment = "100 lbf*in"'))
+    r = run("design", cfg, "--out", tmp_path / "out")
+    assert r.stderr.startswith(f'alightsize: error: {cfg}: item["Strut"].check["tension"].load: expected a force')
+
+
+def test_report_labels_a_checks_load_key_by_item_and_kind():
+    from alightsize.report import _reference_label
+    cfg = read_design(EXAMPLES / "articulated_3457.toml")
+    truss = cfg.items[0]
+    assert truss.checks[1].where == 'item["Upper Truss"].check["column_buckling"]'
+    assert _reference_label(cfg, truss.checks[1].where + ".load") == "Upper Truss / column_buckling (load)"
