@@ -198,7 +198,8 @@ def _print_input_warnings() -> None:
     warnings.simplefilter("default", InputWarning)
     show = warnings.showwarning
 
-    def _show(message, category, filename, lineno, file=None, line=None):
+    def _show(message: Warning | str, category: type[Warning], filename: str, lineno: int, file=None,
+              line: str | None = None) -> None:
         if isinstance(message, InputWarning):
             print(f"alightsize: warning: {message}", file=sys.stderr)
         else:
