@@ -4,7 +4,7 @@ keeping every formula with its substituted numbers for the stress sheets."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from math import pi, sqrt
 from typing import Callable
 
@@ -40,12 +40,14 @@ class Outcome:
 
 @dataclass(frozen=True)
 class Check:
-    """A parsed check: its kind, its SI parameters and the config key path it came from."""
+    """A parsed check: its kind, its SI parameters, the config key path it came from and the config keys
+    given in it that stand in for a section dimension (key -> dimension)."""
 
     kind: str
     params: dict
     where: str
     note: str = ""
+    replaces: dict[str, str] = field(default_factory=dict)
 
     def evaluate(self, section: Section, material: Material) -> Outcome:
         return KINDS[self.kind][1](self.params, section, material)
@@ -358,10 +360,23 @@ KINDS: dict[str, tuple[Callable[[Node], dict], Callable[[dict, Section, Material
 }
 
 
+_PLATE = {"radius": "diameter", "thickness": "thickness"}
+# kind -> {config key: the section dimension its value replaces when given}
+STANDS_IN: dict[str, dict[str, str]] = {
+    "local_buckling": {"wall": "wall"},
+    "plate_fixed_center_load": _PLATE,
+    "plate_supported_center_load": _PLATE,
+    "plate_fixed_center_moment_and_load": _PLATE,
+    "plate_annular_uniform_pressure": {**_PLATE, "inner_radius": "inner_diameter"},
+    "plate_supported_eccentric_and_distributed": {**_PLATE, "radius_tangential": "diameter"},
+}
+
+
 def read_check(node: Node) -> Check:
     kind = node.string("kind", choices=tuple(KINDS))
     params = KINDS[kind][0](node)
     note = node.string("note", "")
     node.finish()
-    return Check(kind, params, node.path, note)
+    replaces = {key: dim for key, dim in STANDS_IN.get(kind, {}).items() if node.has(key)}
+    return Check(kind, params, node.path, note, replaces)
 

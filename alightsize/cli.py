@@ -9,10 +9,11 @@ import math
 import os
 import sys
 import traceback
+import warnings
 from pathlib import Path
 
 from . import __version__
-from .errors import InputError
+from .errors import InputError, InputWarning
 
 
 def _design(args) -> int:
@@ -193,10 +194,26 @@ def parser() -> argparse.ArgumentParser:
     return p
 
 
+def _print_input_warnings() -> None:
+    """Within a catch_warnings block: each distinct InputWarning once, as `alightsize: warning: FILE: KEY: ...`."""
+    warnings.simplefilter("default", InputWarning)
+    show = warnings.showwarning
+
+    def _show(message: Warning | str, category: type[Warning], filename: str, lineno: int, file=None,
+              line: str | None = None) -> None:
+        if isinstance(message, InputWarning):
+            print(f"alightsize: warning: {message}", file=sys.stderr)
+        else:
+            show(message, category, filename, lineno, file, line)
+    warnings.showwarning = _show
+
+
 def main(argv: list[str] | None = None) -> int:
     args = parser().parse_args(argv)
     try:
-        return args.run(args)
+        with warnings.catch_warnings():
+            _print_input_warnings()
+            return args.run(args)
     except InputError as exc:
         print(f"alightsize: error: {exc}", file=sys.stderr)
         return 2

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import math
 import re
 import tomllib
@@ -9,7 +10,7 @@ from pathlib import Path
 from typing import Any
 
 from . import units
-from .errors import InputError
+from .errors import InputError, warn_input
 
 _MISSING = object()
 _INDEXED = re.compile(r"(\w+)\[(\d+)\]")
@@ -56,6 +57,10 @@ class Node:
 
     def error(self, name: str, expected: str, found: str) -> InputError:
         return InputError(self.file, self.key(name), expected, found)
+
+    def warn(self, name: str, message: str) -> None:
+        """Warn about a legal but suspicious value at key `name` (an InputWarning naming file and key path)."""
+        warn_input(self.file, self.key(name), message)
 
     def has(self, name: str) -> bool:
         return name in self.data
@@ -128,11 +133,18 @@ class Node:
             raise self.error(name, "a table", _describe(value))
         return Node(self.file, self.key(name), value, self.context)
 
-    def tables(self, name: str, optional: bool = False) -> list[Node]:
+    def tables(self, name: str, optional: bool = False, label: str | None = None) -> list[Node]:
+        """An array of tables. With `label`, an element whose string under that key is unique in the array is
+        named by it in key paths, `item["Upper Truss"]`, the others by index, `item[0]`."""
         value = self.raw(name, [] if optional else _MISSING)
         if not isinstance(value, list) or not all(isinstance(v, dict) for v in value):
             raise self.error(name, "an array of tables", _describe(value))
-        return [Node(self.file, f"{self.key(name)}[{i}]", v, self.context) for i, v in enumerate(value)]
+        labels = [v.get(label) for v in value] if label else []
+
+        def element(i: int) -> str:
+            text = labels[i] if labels else None
+            return json.dumps(text, ensure_ascii=False) if isinstance(text, str) and labels.count(text) == 1 else str(i)
+        return [Node(self.file, f"{self.key(name)}[{element(i)}]", v, self.context) for i, v in enumerate(value)]
 
     def strings(self, name: str, default: Any = _MISSING) -> list[str]:
         value = self.raw(name, default)

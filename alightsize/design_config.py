@@ -76,7 +76,7 @@ def read_design(path: str | Path, landings_dir: Path | None = None) -> DesignCon
     mats = library(extra)
     loads = _loads(root, path)
     land_node = root.table("landings", optional=True)
-    items = tuple(read_item(n, mats, required) for n in root.tables("item"))
+    items = tuple(read_item(n, mats, required) for n in root.tables("item", label="name"))
     names = [i.name for i in items]
     dup = next((n for n in names if names.count(n) > 1), None)
     if dup:
@@ -87,6 +87,6 @@ def read_design(path: str | Path, landings_dir: Path | None = None) -> DesignCon
         loads, landings = run_landings(land_node, path, loads, landings_dir)
         attach(root, loads)
         root.context["load_references"] = []
-        items = tuple(read_item(n, mats, required) for n in root.tables("item"))
+        items = tuple(read_item(n, mats, required) for n in root.tables("item", label="name"))
     return DesignConfig(path, configuration, title, capsule, legs, units, required, decimals, items, loads,
                         tuple(root.context.get("load_references", ())), landings)

@@ -5,11 +5,12 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 from math import inf
 
+from . import units
 from .checks import Check, Outcome, read_check, KINDS
 from .config import Node
 from .errors import InputError
 from .materials import Material, lookup, require
-from .sections import SHAPES, Section, read_section
+from .sections import SHAPES, Section, geometry_error, read_section
 from .weights import WeightSpec, read_weight
 
 
@@ -52,13 +53,20 @@ class Item:
         return replace(self, section=section)
 
 
-def _read_size(node: Node, section: Section | None) -> SizeSpec:
+def _read_size(node: Node, section: Section | None, checks: tuple[Check, ...]) -> SizeSpec:
+    """The size table; refused when a printed property or a check's own value would not follow the size."""
     if section is None:
         raise node.error("dimension", "an item with a [section] to size", "no section")
     if section.overrides:
         raise node.error("dimension", "a section without printed area/inertia/c overrides (they would not follow the size)",
                          ", ".join(section.overrides))
     dim = node.string("dimension", choices=tuple(section.dims))
+    for check in checks:
+        key = next((k for k, d in check.replaces.items() if d == dim), None)
+        if key is not None:
+            raise node.error("dimension", f"a dimension no check gives its own value for ({check.where}.{key} would "
+                             f"keep its value while the {dim} is sized: remove it, or size another dimension)",
+                             repr(dim))
     gauges = tuple(sorted(node.parse_quantity("gauges", g, "length") for g in node.raw("gauges", [])))
     if gauges:
         low, high = gauges[0], gauges[-1]
@@ -66,6 +74,13 @@ def _read_size(node: Node, section: Section | None) -> SizeSpec:
         low, high = node.quantity("min", "length"), node.quantity("max", "length")
         if low >= high:
             raise node.error("max", "max greater than min", f"min {low:g} m, max {high:g} m")
+    for key, value in (("gauges" if gauges else "min", low), ("gauges" if gauges else "max", high)):
+        problem = geometry_error(section.with_dim(dim, value))
+        if problem:
+            written = node.raw(key)[0] if gauges else node.raw(key)     # lengths shown in the unit written here
+            others = ", ".join(f"{n} {units.in_unit_of(v, written)}" for n, v in section.dims.items() if n != dim)
+            raise node.error(key, f"sizes that keep a real section: {problem[1]}",
+                             f"{dim} {units.in_unit_of(value, written)} with {others}")
     node.finish()
     return SizeSpec(dim, low, high, gauges)
 
@@ -77,12 +92,12 @@ def read_item(node: Node, materials: dict[str, Material], required_default: floa
     sec_node = node.table("section", optional=True)
     section = read_section(sec_node) if sec_node else None
     length = node.quantity("length", "length", default=None)
-    checks = tuple(read_check(c) for c in node.tables("check", optional=True))
+    checks = tuple(read_check(c) for c in node.tables("check", optional=True, label="kind"))
     required = node.number("required_design_factor", required_default)
     w_node = node.table("weight", optional=True)
     weight = read_weight(w_node, materials) if w_node else None
     s_node = node.table("size", optional=True)
-    size = _read_size(s_node, section) if s_node else None
+    size = _read_size(s_node, section, checks) if s_node else None
     note = node.string("note", "")
     node.finish()
     if not checks and weight is None:

@@ -131,12 +131,12 @@ def _loads_context(cfg, system: str) -> dict | None:
 
 
 def _reference_label(cfg, key: str) -> str:
-    """"item[0].check[1].load" -> "Upper Truss / column_buckling (load)"."""
-    m = re.match(r"item\[(\d+)\]\.check\[(\d+)\]\.(.+)$", key)
-    if not m:
-        return key
-    item = cfg.items[int(m.group(1))]
-    return f"{item.name} / {item.checks[int(m.group(2))].kind} ({m.group(3)})"
+    """A check's load key, 'item["Upper Truss"].check["column_buckling"].load' -> "Upper Truss / column_buckling (load)"."""
+    for item in cfg.items:
+        for check in item.checks:
+            if key.startswith(check.where + "."):
+                return f"{item.name} / {check.kind} ({key[len(check.where) + 1:]})"
+    return key
 
 
 def _references(cfg, system: str) -> list[dict]:

@@ -291,6 +291,9 @@ def read_scene(path: str | Path, overrides: dict[str, object] | None = None) -> 
     if ini.has("heading"):                              # the horizontal velocity turned from kappa-2 toward kappa-1
         h, v_h = ini.quantity("heading", "angle", positive=False), float(np.hypot(vel[0], vel[1]))
         vel = np.array([v_h * np.sin(h), v_h * np.cos(h), vel[2]])
+    if vel[2] > 0:                                      # legal (a rebound, a hop), but more likely a sign slip
+        ini.warn("velocity[2]", f"an upward initial velocity, V3 = {ini.raw('velocity')[2]} (kappa-3 is up, a "
+                                "descent is negative): the capsule rises before it lands; simulated as given")
     roll = ini.quantity("roll", "angle", 0.0, positive=False) if ini.has("roll") else 0.0
     if ini.has("inclination"):
         if ini.has("yaw") or ini.has("pitch"):

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
 
-from . import stress
+from . import stress, units
 from .config import Node
 
 # shape -> (dimensions it is given by, derived properties a config may override with printed values)
@@ -43,36 +43,72 @@ class Section:
         """Tube mean diameter d = OD - t (App. IV uses it in A = pi d t and I = pi r^3 t)."""
         return self.outside_diameter - self.wall
 
+    def derived(self, name: str) -> float:
+        """Property `name` ("area", "inertia", "c") from the dimensions alone; KeyError when the shape has none."""
+        try:
+            formula = _DERIVED[self.shape, name]
+        except KeyError:
+            raise KeyError(name) from None
+        return formula(self)
+
+    def _property(self, name: str) -> float:
+        return self.overrides[name] if name in self.overrides else self.derived(name)
+
     def area(self) -> float:
-        if "area" in self.overrides:
-            return self.overrides["area"]
-        d = self.dims
-        if self.shape == "tube":
-            return stress.tube_area(self.mean_diameter, self.wall)
-        if self.shape == "rod":
-            return stress.rod_area(d["diameter"])
-        if self.shape == "rectangle":
-            return stress.rect_area(d["width"], d["height"])
-        raise KeyError("area")
+        return self._property("area")
 
     def inertia(self) -> float:
-        if "inertia" in self.overrides:
-            return self.overrides["inertia"]
-        if self.shape == "tube":
-            return stress.tube_inertia(self.mean_diameter, self.wall)
-        if self.shape == "rectangle":
-            return stress.rect_inertia(self.dims["width"], self.dims["height"])
-        raise KeyError("inertia")
+        return self._property("inertia")
 
     def c(self) -> float:
         """Distance to the extreme fibre: OD/2 for a tube, h/2 for a rectangle, unless printed."""
-        if "c" in self.overrides:
-            return self.overrides["c"]
-        if self.shape == "tube":
-            return self.outside_diameter / 2
-        if self.shape == "rectangle":
-            return self.dims["height"] / 2
-        raise KeyError("c")
+        return self._property("c")
+
+
+# (shape, property) -> the property from the dimensions (AFFDL-TR-66-33 App. IV; formulas in stress.py)
+_DERIVED = {
+    ("tube", "area"): lambda s: stress.tube_area(s.mean_diameter, s.wall),
+    ("tube", "inertia"): lambda s: stress.tube_inertia(s.mean_diameter, s.wall),
+    ("tube", "c"): lambda s: s.outside_diameter / 2,
+    ("rod", "area"): lambda s: stress.rod_area(s.dims["diameter"]),
+    ("rectangle", "area"): lambda s: stress.rect_area(s.dims["width"], s.dims["height"]),
+    ("rectangle", "inertia"): lambda s: stress.rect_inertia(s.dims["width"], s.dims["height"]),
+    ("rectangle", "c"): lambda s: s.dims["height"] / 2,
+}
+
+# A printed property further than this from the one its section's dimensions give is taken to belong to
+# other dimensions (an edited wall, say). The shipped App. IV transcriptions are within 5.2 %: the report
+# computes I = pi r^3 t on the inner radius (telescoping leg, 0.478 against 0.504 in^4) or a smaller
+# diameter than its size line (config. 9 parallelogram post, 2.07 against 2.17 in^4). 10 % keeps them
+# quiet with a margin of two, and a wall edited by a fifth or more moves a thin tube's inertia (about
+# proportional to t) beyond it even from the -5 % the telescoping leg's printed I starts at.
+OVERRIDE_TOLERANCE = 0.10
+
+
+def geometry_error(section: Section) -> tuple[str, str] | None:
+    """(dimension, expected) when the dimensions describe no real section: a tube wall of half its outside
+    diameter or more (no bore: A = pi d t and I = pi r^3 t would be taken on a mean diameter below the wall),
+    a plate's inner diameter as large as its diameter. Rods and rectangles only need positive sizes."""
+    d = section.dims
+    if section.shape == "tube" and "outside_diameter" in d and d["wall"] >= d["outside_diameter"] / 2:
+        return "wall", "a wall less than half the outside diameter (an inside diameter above 0)"
+    if section.shape == "plate" and d.get("inner_diameter", 0.0) >= d["diameter"]:
+        return "inner_diameter", "an inner diameter less than the diameter"
+    return None
+
+
+def _check_overrides(node: Node, section: Section) -> None:
+    """Warn where a printed property does not match the section's own dimensions (OVERRIDE_TOLERANCE)."""
+    for name, printed in section.overrides.items():
+        try:
+            derived = section.derived(name)
+        except KeyError:        # a shape that does not give it (`given`)
+            continue
+        if abs(printed / derived - 1) > OVERRIDE_TOLERANCE:
+            written = node.raw(name)
+            node.warn(name, f"printed {written} but the section's dimensions give {units.in_unit_of(derived, written)} "
+                            f"({100 * (printed / derived - 1):+.1f} %, beyond the {OVERRIDE_TOLERANCE:.0%} tolerance); "
+                            "the printed value is used: is it left over from other dimensions?")
 
 
 def read_section(node: Node) -> Section:
@@ -92,4 +128,9 @@ def read_section(node: Node) -> Section:
             node.raw(n)  # raises "expected this key to be present"
     overrides = {n: node.quantity(n, _OVERRIDE_DIMS[n]) for n in overridable if node.has(n)}
     node.finish()
-    return Section(shape, dims, overrides)
+    section = Section(shape, dims, overrides)
+    problem = geometry_error(section)
+    if problem:
+        raise node.error(problem[0], problem[1], ", ".join(f"{n} {node.raw(n)}" for n in dims))
+    _check_overrides(node, section)
+    return section

@@ -86,6 +86,15 @@ def parse(text: str | float | int, dim: str) -> float:
     return value
 
 
+def in_unit_of(value_si: float, text: str, digits: int = 4) -> str:
+    """An SI value written in the unit of the quantity `text` (same dimension), to `digits` significant
+    figures: (2.0982e-7, "0.478 in^4") -> "0.5041 in^4"."""
+    text = str(text).strip()
+    q = registry().Quantity(text)
+    unit = text.partition(" ")[2].strip() or f"{q.units:~}"
+    return f"{value_si * q.magnitude / q.to_base_units().magnitude:.{digits}g} {unit}"
+
+
 def example(dim: str) -> str:
     return {"length": "0.050 in", "area": "0.463 in^2", "second_moment": "0.478 in^4",
             "mass": "3000 lb", "force": "3750 lbf", "moment": "16150 lbf*in",

@@ -76,11 +76,11 @@ def test_audit_fails_when_a_wall_is_thinned(tmp_path):
 
 
 @pytest.mark.parametrize("edit, key, found", [
-    (lambda t: t.replace('wall = "0.0675 in"', 'wal = "0.0675 in"'), "item[0].section.wal", "unknown key"),
-    (lambda t: t.replace('load = "33784 lbf"', 'load = "33784 lb"', 1), "item[0].check[0].load", "33784 lb"),
-    (lambda t: t.replace('load = "33784 lbf"', 'load = "-3 lbf"', 1), "item[0].check[0].load", "-3 lbf"),
-    (lambda t: t.replace('material = "be-31al"', 'material = "unobtainium"', 1), "item[0].material", "unobtainium"),
-    (lambda t: t.replace('kind = "compression"', 'kind = "compresion"', 1), "item[0].check[0].kind", "compresion"),
+    (lambda t: t.replace('wall = "0.0675 in"', 'wal = "0.0675 in"'), 'item["Upper Truss"].section.wal', "unknown key"),
+    (lambda t: t.replace('load = "33784 lbf"', 'load = "33784 lb"', 1), 'item["Upper Truss"].check["compression"].load', "33784 lb"),
+    (lambda t: t.replace('load = "33784 lbf"', 'load = "-3 lbf"', 1), 'item["Upper Truss"].check["compression"].load', "-3 lbf"),
+    (lambda t: t.replace('material = "be-31al"', 'material = "unobtainium"', 1), 'item["Upper Truss"].material', "unobtainium"),
+    (lambda t: t.replace('kind = "compression"', 'kind = "compresion"', 1), 'item["Upper Truss"].check["compresion"].kind', "compresion"),
     (lambda t: t.replace("[design]", "[design\n"), "", "syntax error"),
     (lambda t: t.replace("required_design_factor = 1.2", "required_design_factor = inf"),
      "audit.required_design_factor", "inf"),

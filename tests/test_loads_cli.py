@@ -95,7 +95,7 @@ def test_bad_envelope_reference_exits_2(tmp_path, edit, key):
     r = subprocess.run([sys.executable, "-m", "alightsize", "design", str(cfg), "--out", str(tmp_path / "o")],
                        capture_output=True, text=True)
     assert r.returncode == 2 and "Traceback" not in r.stderr
-    assert "articulated_3457_envelopes.toml" in r.stderr and "item[0].check[0].load" in r.stderr
+    assert "articulated_3457_envelopes.toml" in r.stderr and 'item["Upper Truss"].check["compression"].load' in r.stderr
     assert not (tmp_path / "o").exists()
 
 
