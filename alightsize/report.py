@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from math import isfinite
 from pathlib import Path
 
@@ -15,11 +16,23 @@ from .resources import data_dir
 from .units import fmt, to_display, unit_label
 
 
+_POWERED = re.compile(r"\{([^{}]+)\}(?=[²³⁴])")
+
+
+def _substituted(formula: str, values: dict[str, str]) -> str:
+    """The formula with each input's display value; a raised value with a unit or sign in parentheses, so
+    t² reads (4.980 in)², not 4.980 in²."""
+    def wrap(m: re.Match) -> str:
+        text = values[m.group(1)]
+        return f"({m.group(0)})" if " " in text or text.startswith("-") else m.group(0)
+    return _POWERED.sub(wrap, formula).format(**values)
+
+
 def _step(step: Step, system: str) -> dict:
     names = {n: n for n, _, _ in step.inputs}
     values = {n: fmt(v, d, system) for n, v, d in step.inputs}
     return {"label": step.label, "symbol": step.symbol, "formula": step.formula.format(**names),
-            "substituted": step.formula.format(**values), "value": fmt(step.value, step.dim, system)}
+            "substituted": _substituted(step.formula, values), "value": fmt(step.value, step.dim, system)}
 
 
 def _factor(f: float) -> str:
@@ -78,7 +91,6 @@ def _loads_context(cfg, system: str) -> dict | None:
 
 def _reference_label(cfg, key: str) -> str:
     """"item[0].check[1].load" -> "Upper Truss / column_buckling (load)"."""
-    import re
     m = re.match(r"item\[(\d+)\]\.check\[(\d+)\]\.(.+)$", key)
     if not m:
         return key

@@ -13,3 +13,14 @@ def test_pictures_shrink_to_the_page():
     style = template_env(True).get_template("style.html.j2").render()
     rule = re.search(r"img\s*\{([^}]*)\}", style)
     assert rule and re.search(r"max-width:\s*100%", rule.group(1))
+
+
+def test_a_raised_length_is_substituted_in_parentheses():
+    """t² with t = 4.98 in reads (4.980 in)², never 4.980 in² (an area); a bare number needs none."""
+    from alightsize.checks import Step
+    from alightsize.report import _step
+    inch = 0.0254
+    step = Step("Strip", "A", "{n} {t}² + {m}²", (("n", 10.0, "dimensionless"), ("t", 4.98 * inch, "length"),
+                                                ("m", 3.0, "dimensionless")), 0.0, "area")
+    assert _step(step, "US")["substituted"] == "10.00 (4.980 in)² + 3.000²"
+
