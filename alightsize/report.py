@@ -32,11 +32,18 @@ def _step(step: Step, system: str) -> dict:
     names = {n: n for n, _, _ in step.inputs}
     values = {n: fmt(v, d, system) for n, v, d in step.inputs}
     return {"label": step.label, "symbol": step.symbol, "formula": step.formula.format(**names),
-            "substituted": _substituted(step.formula, values), "value": fmt(step.value, step.dim, system)}
+            "substituted": _substituted(step.formula, values), "value": fmt(step.value, step.dim, system),
+            "given": step.formula == f"{{{step.symbol}}}"}
 
 
 def _factor(f: float) -> str:
     return f"{f:.2f}" if isfinite(f) else "∞"
+
+
+def _check_title(kind: str, mode: str) -> str:
+    """"column buckling", or "plate fixed center load (plate bending)" where the failure mode differs."""
+    words = kind.replace("_", " ")
+    return words if kind == mode else f"{words} ({mode.replace('_', ' ')})"
 
 
 def _dims(item, system: str) -> str:
@@ -58,7 +65,7 @@ def context(res) -> dict:
         sheets.append({
             "name": item.name, "count": item.count, "material": item.material.name, "size": _dims(item, system),
             "note": item.note,
-            "checks": [{"kind": item.checks[r.index].kind, "mode": r.outcome.mode, "note": item.checks[r.index].note,
+            "checks": [{"title": _check_title(item.checks[r.index].kind, r.outcome.mode), "note": item.checks[r.index].note,
                         "steps": [_step(s, system) for s in r.outcome.steps],
                         "allowable": fmt(r.outcome.allowable, "stress", system) if r.outcome.allowable else "",
                         "factor": _factor(r.outcome.factor), "required": f"{r.required:.2f}", "ok": r.ok}

@@ -24,3 +24,51 @@ def test_a_raised_length_is_substituted_in_parentheses():
                                                 ("m", 3.0, "dimensionless")), 0.0, "area")
     assert _step(step, "US")["substituted"] == "10.00 (4.980 in)² + 3.000²"
 
+
+
+def _disc(**p):
+    from alightsize.weights import WeightSpec
+    params = {"rho": 2768.0, "length": None, "allowance": 0.0, "extra": 0.1, "diameter": 0.08, "thickness": 0.01,
+              "inner_diameter": 0.0, "holes": 0, "hole_diameter": None, **p}
+    return WeightSpec("disc", params, "item[0].weight").evaluate(None, None, None)
+
+
+def test_a_plain_disc_weight_has_no_empty_cut_out_terms():
+    from alightsize.report import _step
+    _, steps = _disc()
+    line = _step(steps[0], "US")
+    assert "dh" not in line["formula"] and "di" not in line["formula"]
+    assert not re.search(r"(?<![\d.,])0(?![\d.,])", line["substituted"])
+    _, steps = _disc(holes=6, hole_diameter=0.01, inner_diameter=0.02)
+    line = _step(steps[0], "US")
+    assert "6 dh²" in line["formula"] and "di²" in line["formula"] and line["substituted"].count("in)²") == 3
+
+
+def test_a_given_value_is_not_stated_as_its_own_formula():
+    """ΔW (extra) and Pallow are inputs: the sheet says so instead of "ΔW = ΔW"."""
+    from alightsize.design import run_design
+    from alightsize.design_config import read_design
+    from alightsize.report import render_html, render_markdown
+    from conftest import EXAMPLES
+    res = run_design(read_design(EXAMPLES / "telescoping.toml"))
+    symbols = {s.symbol for w in res.weights for s in w.steps} | {s.symbol for r in res.records for s in r.outcome.steps}
+    for text in (render_html(res), render_markdown(res)):
+        assert not [s for s in symbols if re.search(rf"(^|[ >|]){re.escape(s)} = {re.escape(s)}( |<|$)", text, re.M)]
+
+
+def test_a_check_heading_names_its_failure_mode_once():
+    """'compression (compression)' says one thing twice; a different failure mode still shows."""
+    from alightsize.design import run_design
+    from alightsize.design_config import read_design
+    from alightsize.report import render_html, render_markdown
+    from conftest import EXAMPLES
+    res = run_design(read_design(EXAMPLES / "articulated_3457.toml"))
+    heads = re.findall(r'<th colspan="4">([^<]*)</th>', render_html(res))
+    md_heads = [line.split(" | ")[0][2:] for line in render_markdown(res).splitlines()
+                if line.endswith("| formula | substituted | value |")]
+    assert len(heads) == len(md_heads) == len(res.records)
+    for r, html_head, md_head in zip(res.records, heads, md_heads):
+        kind, mode = r.item.checks[r.index].kind, r.outcome.mode
+        for head in (html_head, md_head):
+            assert not re.fullmatch(r"(.+) \((\1)\)", head)
+            assert head.endswith(f"({mode.replace('_', ' ')})") == (kind != mode)
