@@ -72,3 +72,33 @@ def test_a_check_heading_names_its_failure_mode_once():
         for head in (html_head, md_head):
             assert not re.fullmatch(r"(.+) \((\1)\)", head)
             assert head.endswith(f"({mode.replace('_', ' ')})") == (kind != mode)
+
+
+def _inside_and_apart(fig) -> None:
+    """Every axes (with its labels, ticks and title) lies inside the saved figure and overlaps no other."""
+    renderer = fig.canvas.get_renderer()
+    boxes = [ax.get_tightbbox(renderer) for ax in fig.axes]
+    page = fig.bbox
+    for box in boxes:
+        assert page.x0 - 0.5 <= box.x0 and box.x1 <= page.x1 + 0.5 and page.y0 - 0.5 <= box.y0 and box.y1 <= page.y1 + 0.5
+    for i, a in enumerate(boxes):
+        for b in boxes[i + 1:]:
+            assert not (a.x0 < b.x1 - 1 and b.x0 < a.x1 - 1 and a.y0 < b.y1 - 1 and b.y0 < a.y1 - 1)
+
+
+def _kept(monkeypatch, module) -> list:
+    """The figures `module` closes, kept for inspection."""
+    figs: list = []
+    monkeypatch.setattr(module.plt, "close", figs.append)
+    return figs
+
+
+def test_heat_map_colorbars_stay_off_the_next_panel(tmp_path, monkeypatch):
+    from alightsize import loads_output
+    from alightsize.loads import run_loads
+    from alightsize.loads_config import read_loads
+    from conftest import EXAMPLES
+    res = run_loads(read_loads(EXAMPLES / "loads" / "articulated.toml"))
+    figs = _kept(monkeypatch, loads_output)
+    loads_output.heatmap(res, "9", tmp_path / "h.png", "US")
+    _inside_and_apart(figs[0])
