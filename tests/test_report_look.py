@@ -86,10 +86,11 @@ def _inside_and_apart(fig) -> None:
             assert not (a.x0 < b.x1 - 1 and b.x0 < a.x1 - 1 and a.y0 < b.y1 - 1 and b.y0 < a.y1 - 1)
 
 
-def _kept(monkeypatch, module) -> list:
-    """The figures `module` closes, kept for inspection."""
+def _kept(monkeypatch) -> list:
+    """The figures pyplot is asked to close, kept for inspection."""
+    import matplotlib.pyplot as plt
     figs: list = []
-    monkeypatch.setattr(module.plt, "close", figs.append)
+    monkeypatch.setattr(plt, "close", figs.append)
     return figs
 
 
@@ -99,6 +100,27 @@ def test_heat_map_colorbars_stay_off_the_next_panel(tmp_path, monkeypatch):
     from alightsize.loads_config import read_loads
     from conftest import EXAMPLES
     res = run_loads(read_loads(EXAMPLES / "loads" / "articulated.toml"))
-    figs = _kept(monkeypatch, loads_output)
+    figs = _kept(monkeypatch)
     loads_output.heatmap(res, "9", tmp_path / "h.png", "US")
     _inside_and_apart(figs[0])
+
+
+def test_landing_plots_keep_their_labels_and_a_short_legend(tmp_path, monkeypatch):
+    """The shock spectrum's axis labels are inside the picture; the stroke plot's legend names legs and cell
+    kinds (not every cell of every leg) and sits beside the plot, not over it."""
+    from alightsize.landing_output import plots
+    from alightsize.scene_config import read_scene
+    from alightsize_sim.landing import simulate
+    from conftest import EXAMPLES
+    cfg = read_scene(EXAMPLES / "scenes" / "telescoping_config2.toml")
+    res = simulate(cfg.scene, cfg.controls)
+    figs = _kept(monkeypatch)
+    names = [p.name for p in plots(cfg, res, tmp_path)]
+    for fig in figs:
+        _inside_and_apart(fig)
+    strokes = figs[names.index("strokes.png")]
+    kinds = {n.rstrip("0123456789") for cells in cfg.cell_names for n in cells}
+    legend = strokes.legends[0] if strokes.legends else strokes.axes[0].get_legend()
+    assert len(legend.get_texts()) <= len(cfg.scene.legs) + len(kinds)
+    box, plot = legend.get_window_extent(strokes.canvas.get_renderer()), strokes.axes[0].bbox
+    assert box.x0 >= plot.x1 or box.y0 >= plot.y1 or box.x1 <= plot.x0
