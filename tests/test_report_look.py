@@ -124,3 +124,17 @@ def test_landing_plots_keep_their_labels_and_a_short_legend(tmp_path, monkeypatc
     assert len(legend.get_texts()) <= len(cfg.scene.legs) + len(kinds)
     box, plot = legend.get_window_extent(strokes.canvas.get_renderer()), strokes.axes[0].bbox
     assert box.x0 >= plot.x1 or box.y0 >= plot.y1 or box.x1 <= plot.x0
+
+
+def test_sweep_axes_are_the_parameters_as_written(tmp_path, monkeypatch):
+    """A grid written in ft/s and deg is plotted in ft/s and deg, labelled with the scene key."""
+    import json
+    from alightsize.sweep_report import boundary_plot
+    rows = [{"params_json": json.dumps({"initial.velocity[1]": f"{v} ft/s", "terrain.slope": f"{a} deg"}),
+             "outcome": "stable" if v < 10 else "tipped"} for v in (5, 10, 15) for a in (-10, 10)]
+    figs = _kept(monkeypatch)
+    boundary_plot(rows, ("initial.velocity[1]", "terrain.slope"), tmp_path / "b.png")
+    ax = figs[0].axes[0]
+    assert ax.get_xlabel() == "initial.velocity[1] (ft/s)" and ax.get_ylabel() == "terrain.slope (deg)"
+    xy = ax.collections[0].get_offsets()
+    assert sorted(set(xy[:, 0])) == [5, 10, 15] and sorted(set(xy[:, 1])) == [-10, 10]
