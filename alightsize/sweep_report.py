@@ -28,6 +28,22 @@ SYMBOL = {"stable": "X", "bottomed_alpha": "●", "bottomed_psi": "■", "bottom
           "bottomed_axial": "▲", "walking": "+", "time_out": "+", "tipped": "◆", "body_contact": "▼",
           "failed": "F", None: "F"}
 Z95 = 1.959963984540054
+# What each symbol of the outcome matrix means, in the words of its legend.
+MEANING = {"stable": "stable", "bottomed_alpha": "bottomed α", "bottomed_psi": "bottomed ψ",
+           "bottomed_rotational_pad": "bottomed rotational pad", "bottomed_axial": "bottomed axial",
+           "walking": "walking", "time_out": "time-out", "tipped": "tipped", "body_contact": "body contact",
+           "failed": "failed"}
+
+
+def matrix_legend(doc: dict) -> list[str]:
+    """"X stable", "● bottomed rotational pad", ...: the symbols of the classes simulated or printed in this
+    study only (a telescoping study has no α or ψ cells)."""
+    present = {r[k] for r in doc["run_list"] for k in ("outcome_class", "reference_class") if r.get(k)}
+    by_symbol: dict[str, list[str]] = {}
+    for cls, symbol in SYMBOL.items():
+        if cls in present:
+            by_symbol.setdefault(symbol, []).append(MEANING[cls])
+    return [f"{symbol} {' / '.join(words)}" for symbol, words in by_symbol.items()]
 
 
 def wilson(k: int, n: int) -> tuple[float, float]:
@@ -251,6 +267,7 @@ def write_results(study: Study, out: Path) -> list[Path]:
     if len(done) >= 20:
         plots.append(distribution_plot(done, out / "distributions.png").name)
     html = template_env(True).get_template("sweep_report.html.j2").render(doc=doc, plots=plots, version=__version__, symbols=SYMBOL,
+                                                                  legend=matrix_legend(doc),
                                                                   source=study.path.name)
     files.append(write_atomic(out / "report.html", html))
     return files + [out / p for p in plots]

@@ -138,3 +138,15 @@ def test_sweep_axes_are_the_parameters_as_written(tmp_path, monkeypatch):
     assert ax.get_xlabel() == "initial.velocity[1] (ft/s)" and ax.get_ylabel() == "terrain.slope (deg)"
     xy = ax.collections[0].get_offsets()
     assert sorted(set(xy[:, 0])) == [5, 10, 15] and sorted(set(xy[:, 1])) == [-10, 10]
+
+
+def test_matrix_legend_names_only_this_studys_outcomes():
+    """A telescoping study's matrix legend does not explain the articulated legs' α and ψ cells."""
+    from alightsize.sweep_report import SYMBOL, matrix_legend
+    doc = {"run_list": [{"outcome_class": "stable", "reference_class": "tipped"},
+                        {"outcome_class": "bottomed_rotational_pad", "reference_class": None}]}
+    legend = " · ".join(matrix_legend(doc))
+    assert "α" not in legend and "ψ" not in legend
+    for cls in ("stable", "tipped", "bottomed_rotational_pad"):
+        assert SYMBOL[cls] in legend
+    assert SYMBOL["bottomed_psi"] not in legend and SYMBOL["body_contact"] not in legend
