@@ -19,6 +19,7 @@ from .scene_config import SceneConfig
 from .shock_spectrum import default_frequencies, srs
 
 ONSET_WINDOW = 1e-3        # s: onset rates are slopes of the acceleration sampled at this interval
+LINE_STYLES = ("-", "--", ":", "-.")  # the stroke plot's cell kinds; the colour is the leg
 
 
 def body_histories(cfg: SceneConfig, res: Result) -> tuple[np.ndarray, np.ndarray]:
@@ -135,6 +136,7 @@ def plots(cfg: SceneConfig, res: Result, out: Path) -> list[Path]:
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    from matplotlib.lines import Line2D
     xdd, omd = body_histories(cfg, res)
     files = []
 
@@ -145,7 +147,7 @@ def plots(cfg: SceneConfig, res: Result, out: Path) -> list[Path]:
         files.append(path)
 
     for data, label, unit, name in ((xdd, "XDD", "g", "xdd.png"), (omd, "OMD", "rad/s²", "omd.png")):
-        fig, axes = plt.subplots(3, 1, figsize=(7, 7), sharex=True)
+        fig, axes = plt.subplots(3, 1, figsize=(7, 7), sharex=True, layout="constrained")
         for k in range(3):
             axes[k].plot(res.t, data[:, k], lw=0.9)
             axes[k].set_ylabel(f"{label}({k + 1}), {unit}")
@@ -153,18 +155,22 @@ def plots(cfg: SceneConfig, res: Result, out: Path) -> list[Path]:
         axes[-1].set_xlabel("time, s")
         fig.suptitle(f"{cfg.title}: {label} (cf. Figs. 33-38)")
         save(fig, name)
-    fig, ax = plt.subplots(figsize=(7, 4))
+    fig, ax = plt.subplots(figsize=(7, 4), layout="constrained")
+    kinds = {}                              # cell kind ("rot" for rot1-rot4) -> line style
     for i in range(len(cfg.scene.legs)):
         for j, name in enumerate(cfg.cell_names[i]):
             d = res.deflections[:, i, j]
             if np.nanmax(np.abs(np.nan_to_num(d))) > 0:
-                ax.plot(res.t, d * 1000, lw=0.8, label=f"leg {i + 1} {name}")
+                style = kinds.setdefault(name.rstrip("0123456789"), LINE_STYLES[len(kinds) % len(LINE_STYLES)])
+                ax.plot(res.t, d * 1000, lw=0.8, color=f"C{i}", ls=style)
     ax.set_xlabel("time, s")
     ax.set_ylabel("cell deflection, mm")
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=6, ncol=4)
+    handles = [Line2D([], [], color=f"C{i}", label=f"leg {i + 1}") for i in range(len(cfg.scene.legs))]
+    handles += [Line2D([], [], color="k", ls=style, lw=0.8, label=kind) for kind, style in kinds.items()]
+    fig.legend(handles=handles, loc="outside right upper", fontsize=8)
     save(fig, "strokes.png")
-    fig, ax = plt.subplots(figsize=(7, 4))
+    fig, ax = plt.subplots(figsize=(7, 4), layout="constrained")
     ke, pe = energies(cfg, res)
     ax.plot(res.t, ke, label="kinetic")
     ax.plot(res.t, pe - pe[0], label="potential (from first contact)")
@@ -178,7 +184,7 @@ def plots(cfg: SceneConfig, res: Result, out: Path) -> list[Path]:
     if res.t[-1] > 0:
         f = default_frequencies(1.0, 1000.0)
         spec = srs(res.t, xdd[:, 2], f, cfg.srs_damping)
-        fig, ax = plt.subplots(figsize=(7, 4))
+        fig, ax = plt.subplots(figsize=(7, 4), layout="constrained")
         ax.loglog(f, spec)
         ax.set_xlabel("frequency, Hz")
         ax.set_ylabel("maximax absolute acceleration, g")

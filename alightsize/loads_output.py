@@ -103,23 +103,26 @@ def heatmap(res: LoadsResult, case_name: str, path: Path, system: str) -> None:
     """Each member's load over alpha-beta at the psi of its largest magnitude."""
     case = next(c for c in res.config.cases if c.name == case_name)
     (psi, alpha, beta), fields = member_fields(case, res.config.grid)
-    fig, axes = plt.subplots(2, 5, figsize=(17, 6.5), sharex=True, sharey=True)
+    fig, axes = plt.subplots(2, 5, figsize=(17, 6.5), sharex=True, sharey=True, layout="constrained")
     a, b = np.degrees(alpha), np.degrees(beta)
     extent = (a[0], a[-1], b[0], b[-1])
+    bottomed = False
     for ax, m in zip(axes.flat, MEMBERS):
         f = to_display(np.asarray(fields[m]), "force", system)      # NaN where a cell has bottomed
         k = int(np.unravel_index(np.nanargmax(np.abs(f)), f.shape)[0])
         lim = float(np.nanmax(np.abs(f[k]))) or 1.0
+        bottomed |= bool(np.isnan(f[k]).any())
+        ax.set_facecolor("0.8")
         im = ax.imshow(f[k].T, origin="lower", extent=extent, aspect="auto", cmap="RdBu_r", vmin=-lim, vmax=lim,
                        interpolation="nearest")
         ax.set_title(f"{label(m)} at psi = {np.degrees(psi[k]):+.0f} deg", fontsize=9)
-        fig.colorbar(im, ax=ax, label=unit_label("force", system))
+        fig.colorbar(im, ax=ax)
     for ax in axes[1]:
         ax.set_xlabel("alpha (deg)")
     for ax in axes[:, 0]:
         ax.set_ylabel("beta (deg)")
-    fig.suptitle(f"Configuration {case_name}: member loads (tension +) over alpha-beta at the governing psi")
-    fig.subplots_adjust(left=0.04, right=0.98, bottom=0.08, top=0.9, wspace=0.25, hspace=0.25)
+    fig.suptitle(f"Configuration {case_name}: member loads, {unit_label('force', system)} (tension +), over alpha-beta "
+                 "at the governing psi" + ("; grey: a cell has bottomed" if bottomed else ""))
     fig.savefig(path, format="png", dpi=72, metadata=_META)
     plt.close(fig)
 

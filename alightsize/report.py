@@ -19,15 +19,34 @@ from .resources import data_dir
 from .units import fmt, to_display, unit_label
 
 
+_POWERED = re.compile(r"\{([^{}]+)\}(?=[²³⁴])")
+
+
+def _substituted(formula: str, values: dict[str, str]) -> str:
+    """The formula with each input's display value; a raised value with a unit or sign in parentheses, so
+    t² reads (4.980 in)², not 4.980 in²."""
+    def wrap(m: re.Match) -> str:
+        text = values[m.group(1)]
+        return f"({m.group(0)})" if " " in text or text.startswith("-") else m.group(0)
+    return _POWERED.sub(wrap, formula).format(**values)
+
+
 def _step(step: Step, system: str) -> dict:
     names = {n: n for n, _, _ in step.inputs}
     values = {n: fmt(v, d, system) for n, v, d in step.inputs}
     return {"label": step.label, "symbol": step.symbol, "formula": step.formula.format(**names),
-            "substituted": step.formula.format(**values), "value": fmt(step.value, step.dim, system)}
+            "substituted": _substituted(step.formula, values), "value": fmt(step.value, step.dim, system),
+            "given": step.formula == f"{{{step.symbol}}}"}
 
 
 def _factor(f: float) -> str:
     return f"{f:.2f}" if isfinite(f) else "∞"
+
+
+def _check_title(kind: str, mode: str) -> str:
+    """"column buckling", or "plate fixed center load (plate bending)" where the failure mode differs."""
+    words = kind.replace("_", " ")
+    return words if kind == mode else f"{words} ({mode.replace('_', ' ')})"
 
 
 def _dims(item, system: str) -> str:
@@ -49,7 +68,7 @@ def context(res) -> dict:
         sheets.append({
             "name": item.name, "count": item.count, "material": item.material.name, "size": _dims(item, system),
             "note": item.note,
-            "checks": [{"kind": item.checks[r.index].kind, "mode": r.outcome.mode, "note": item.checks[r.index].note,
+            "checks": [{"title": _check_title(item.checks[r.index].kind, r.outcome.mode), "note": item.checks[r.index].note,
                         "steps": [_step(s, system) for s in r.outcome.steps],
                         "allowable": fmt(r.outcome.allowable, "stress", system) if r.outcome.allowable else "",
                         "factor": r.stated_factor, "required": f"{r.required:.2f}", "ok": r.ok,

@@ -19,7 +19,8 @@ from .atomic import write_atomic
 from .landing_criteria import violation_kinds
 from .report import template_env, text_cell
 from .run_store import RunStore
-from .study import Study, parameter_columns
+from .study import Study
+from .units import registry
 
 SCHEMA = "alightsize.sweep/1"
 # The printed legends: Table 2 (l. 912-914), Tables 3-4 (l. 1129-1133, 1160-1166); axial, body contact and
@@ -28,6 +29,22 @@ SYMBOL = {"stable": "X", "bottomed_alpha": "●", "bottomed_psi": "■", "bottom
           "bottomed_axial": "▲", "walking": "+", "time_out": "+", "tipped": "◆", "body_contact": "▼",
           "failed": "F", None: "F"}
 Z95 = 1.959963984540054
+# What each symbol of the outcome matrix means, in the words of its legend.
+MEANING = {"stable": "stable", "bottomed_alpha": "bottomed α", "bottomed_psi": "bottomed ψ",
+           "bottomed_rotational_pad": "bottomed rotational pad", "bottomed_axial": "bottomed axial",
+           "walking": "walking", "time_out": "time-out", "tipped": "tipped", "body_contact": "body contact",
+           "failed": "failed"}
+
+
+def matrix_legend(doc: dict) -> list[str]:
+    """"X stable", "● bottomed rotational pad", ...: the symbols of the classes simulated or printed in this
+    study only (a telescoping study has no α or ψ cells)."""
+    present = {r[k] for r in doc["run_list"] for k in ("outcome_class", "reference_class") if r.get(k)}
+    by_symbol: dict[str, list[str]] = {}
+    for cls, symbol in SYMBOL.items():
+        if cls in present:
+            by_symbol.setdefault(symbol, []).append(MEANING[cls])
+    return [f"{symbol} {' / '.join(words)}" for symbol, words in by_symbol.items()]
 
 
 def wilson(k: int, n: int) -> tuple[float, float]:
@@ -81,29 +98,39 @@ def matrix(study: Study, rows: list[dict]) -> dict | None:
             "cells": [{"row": list(k), "values": v} for k, v in table.items()]}
 
 
-def _numeric(params: dict, name: str) -> float | None:
-    cols = parameter_columns({name: params.get(name)}) if name in params else {}
-    v = next(iter(cols.values()), None)
-    return v if isinstance(v, float) else None
+def _as_written(values: list, name: str) -> tuple[list[float | None], str]:
+    """The parameter `name` of each run's params as a number in the unit it is written in (that of its first
+    quantity, "ft/s"), and that unit ("" for plain numbers); None where it is not a number."""
+    ureg = registry()
+    unit, out = None, []
+    for p in values:
+        v = p.get(name)
+        try:
+            q = ureg.Quantity(v if isinstance(v, (int, float)) and not isinstance(v, bool) else str(v))
+            unit = unit if unit is not None else q.units
+            out.append(float(q.to(unit).magnitude))
+        except Exception:                          # noqa: BLE001 - text, lists, other dimensions: not plotted
+            out.append(None)
+    return out, "" if unit is None or unit == registry().dimensionless else f"{unit:~P}"
 
 
 def plot_axes(study: Study, rows: list[dict]) -> tuple[str, str] | None:
     """The two parameters of the boundary plot: the study's first two candidates with more than one
     numeric value among the runs."""
     params = [json.loads(r["params_json"]) for r in rows]
-    varied = [k for k in study.plot_params if len({_numeric(p, k) for p in params} - {None}) > 1]
+    varied = [k for k in study.plot_params if len(set(_as_written(params, k)[0]) - {None}) > 1]
     return tuple(varied[:2]) if len(varied) >= 2 else None
 
 
 def boundary_plot(rows: list[dict], axes: tuple[str, str], path: Path) -> Path:
-    """Success fraction at each (x, y) of the two parameters (SI, angles in deg): green stable/met, red not."""
+    """Success fraction at each (x, y) of the two parameters in the study's units: green stable/met, red not."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    params = [json.loads(r["params_json"]) for r in rows]
+    (xs_run, x_unit), (ys_run, y_unit) = (_as_written(params, k) for k in axes)
     cells: dict = {}
-    for r in rows:
-        p = json.loads(r["params_json"])
-        xy = (_numeric(p, axes[0]), _numeric(p, axes[1]))
+    for r, xy in zip(rows, zip(xs_run, ys_run)):
         if None not in xy:
             cells.setdefault(xy, []).append(_success(r))
     xy = np.array(list(cells))
@@ -117,9 +144,8 @@ def boundary_plot(rows: list[dict], axes: tuple[str, str], path: Path) -> Path:
         z = np.full((len(ys), len(xs)), np.nan)
         z[np.searchsorted(ys, xy[:, 1]), np.searchsorted(xs, xy[:, 0])] = frac
         ax.contour(xs, ys, z, levels=[0.5], colors="k", linewidths=1.2)
-    unit = {k: next(iter(parameter_columns({k: json.loads(rows[0]["params_json"]).get(k)})), k) for k in axes}
-    ax.set_xlabel(unit[axes[0]])
-    ax.set_ylabel(unit[axes[1]])
+    ax.set_xlabel(f"{axes[0]} ({x_unit})" if x_unit else axes[0])
+    ax.set_ylabel(f"{axes[1]} ({y_unit})" if y_unit else axes[1])
     ax.set_title("Successful runs over two parameters" + (" (line: half successful)" if len(xs) * len(ys) == len(xy) else ""))
     fig.tight_layout()
     write_atomic(path, lambda p: fig.savefig(p, dpi=110, format="png"))
@@ -232,6 +258,7 @@ def write_results(study: Study, out: Path) -> list[Path]:
     if len(done) >= 20:
         plots.append(distribution_plot(done, out / "distributions.png").name)
     html = template_env(True).get_template("sweep_report.html.j2").render(doc=doc, plots=plots, version=__version__, symbols=SYMBOL,
+                                                                  legend=matrix_legend(doc),
                                                                   source=study.path.name)
     files.append(write_atomic(out / "report.html", html))
     return files + [out / p for p in plots]

@@ -31,6 +31,12 @@ def scaled_weight(k: float, density_ratio: float, length_ratio: float, area_rati
     return k * density_ratio * length_ratio * area_ratio * w_model
 
 
+def _disc_area(holes: int, hole_d: float, inner_d: float) -> str:
+    """The disc's area term of disc_weight with only the cut-outs it has: "{d}²", "({d}² - 6 {dh}²)", ..."""
+    cuts = (f" - {holes} {{dh}}²" if holes and hole_d else "") + (" - {di}²" if inner_d else "")
+    return f"({{d}}²{cuts})" if cuts else "{d}²"
+
+
 @dataclass(frozen=True)
 class WeightSpec:
     """How an item's weight is obtained; lengths in m, masses in kg. Missing sizes come from the section."""
@@ -65,11 +71,11 @@ class WeightSpec:
             di = p["inner_diameter"]
             if di is None:
                 di = section.dims.get("inner_diameter", 0.0) if section else 0.0
-            w = disc_weight(rho, d, t, p["holes"], p["hole_diameter"] or 0.0, di)
-            steps = [Step("Weight", "W", "{ρ} π/4 ({d}² - {n} {dh}² - {di}²) {t}",
-                          (("ρ", rho, "density"), ("d", d, "length"), ("n", p["holes"], "dimensionless"),
-                           ("dh", p["hole_diameter"] or 0.0, "length"), ("di", di, "length"), ("t", t, "length")),
-                          w, "mass")]
+            dh = p["hole_diameter"] or 0.0
+            w = disc_weight(rho, d, t, p["holes"], dh, di)
+            steps = [Step("Weight", "W", f"{{ρ}} π/4 {_disc_area(p['holes'], dh, di)} {{t}}",
+                          (("ρ", rho, "density"), ("d", d, "length"), ("dh", dh, "length"), ("di", di, "length"),
+                           ("t", t, "length")), w, "mass")]
         else:  # prism
             a = p["area"] if p["area"] is not None else section.area()
             w = prism_weight(rho, a, l)
