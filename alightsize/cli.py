@@ -14,6 +14,7 @@ from pathlib import Path
 
 from . import __version__
 from .errors import InputError, InputWarning
+from .resources import data_dir
 
 
 def _design(args) -> int:
@@ -188,7 +189,8 @@ def parser() -> argparse.ArgumentParser:
     s.add_argument("--json", help="write the factors as JSON (alightsize.scale/1)")
     s.set_defaults(run=_scale)
     r = sub.add_parser("reports", help="regenerate the reference reports of the shipped examples")
-    r.add_argument("--examples", default="examples/affdl-tr-66-33", help="folder of design configs")
+    r.add_argument("--examples", default=str(data_dir("examples") / "affdl-tr-66-33"),
+                   help="folder of design configs (default: the shipped 1966 examples)")
     r.add_argument("--out", default="reports/affdl-tr-66-33", help="output folder")
     r.set_defaults(run=_reports)
     return p

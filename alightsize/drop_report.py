@@ -29,12 +29,12 @@ from . import __version__, drop_tables, units  # noqa: E402
 from .atomic import write_atomic  # noqa: E402
 from .landing_output import body_histories, summary  # noqa: E402
 from .report import template_env  # noqa: E402
+from .resources import data_dir  # noqa: E402
 from .scene_config import SceneConfig, read_scene  # noqa: E402
 from .shock_spectrum import default_frequencies, srs  # noqa: E402
 
 SCHEMA = "alightsize.drops/1"
-ROOT = Path(__file__).resolve().parents[1]                  # the source checkout
-DROPS_DIR = ROOT / "examples" / "affdl-tr-66-33" / "drops"
+DROPS_DIR = data_dir("examples") / "affdl-tr-66-33" / "drops"
 DROP_NUMBERS = (1, 2, 3, 4, 5, 6, 8, 9, 10, 11)              # AFFDL-TR-66-33 Table 5 (drop 7 deleted, l. 2279)
 SOURCES = ("simulated", "analytical", "experimental")
 FT = units.parse("1 ft", "length")                           # m per ft

@@ -1,4 +1,4 @@
-"""Where the shipped data folders (materials/, templates/) are, installed or in a source checkout."""
+"""Where the shipped data folders (materials/, templates/, examples/) are, installed or in a source checkout."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ _PACKAGE = Path(__file__).resolve().parent
 
 
 def data_dir(name: str) -> Path:
-    """`materials` or `templates`: inside the installed wheel (alightsize/_data/NAME) or the checkout root."""
+    """`materials`, `templates` or `examples`: inside the installed wheel (alightsize/_data/NAME) or the checkout root."""
     for candidate in (_PACKAGE / "_data" / name, _PACKAGE.parent / name):
         if candidate.is_dir():
             return candidate

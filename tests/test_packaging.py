@@ -41,3 +41,11 @@ def test_every_document_the_readme_and_docs_name_exists():
             if not any((base / name).exists() for base in (doc.parent, ROOT, ROOT / "docs")):
                 missing.append(f"{doc.name}: {name}")
     assert not missing, missing
+
+
+def test_ci_runs_the_readme_test_command_verbatim():
+    """The README opens with two commands; .ci/run's last line is the second, character for character."""
+    commands = [line for line in (ROOT / "README.md").read_text().split("```sh\n", 1)[1].split("```")[0].splitlines()
+                if line.strip()]
+    assert len(commands) == 2
+    assert (ROOT / ".ci" / "run").read_text().strip().splitlines()[-1] == commands[1]
