@@ -96,10 +96,14 @@ def context(res) -> dict:
 
 
 def _conditions(c: dict, system: str) -> str:
-    """"35.0 ft/s down, 15.0 ft/s across, slope 20°, μ 1.5 / 1.0" (friction above 100 reads "non-slip")."""
+    """"35.0 ft/s down, 15.0 ft/s horizontal downhill on a 20° slope, μ 1.5 / 1.0" (friction above 100 reads
+    "non-slip"; the direction is downhill, uphill or across within 45° of each)."""
     mu = "non-slip" if c["mu_static"] >= 100 else f"μ {c['mu_static']:g} / {c['mu_dynamic']:g}"
+    heading = c.get("from_downhill_deg")
+    way = "" if heading is None else " downhill" if heading < 45 else " uphill" if heading > 135 else " across"
+    ground = f"on a {c['slope_deg']:.0f}° slope" if round(c["slope_deg"]) else "on level ground"
     return (f"{fmt(c['vertical_m_s'], 'velocity', system, 3)} down, {fmt(c['horizontal_m_s'], 'velocity', system, 3)} "
-            f"across, slope {c['slope_deg']:.0f}°, {mu}")
+            f"horizontal{way} {ground}, {mu}")
 
 
 def landing_rows(cfg, system: str) -> dict[str, dict]:
@@ -150,11 +154,11 @@ def _loads_context(cfg, system: str) -> dict | None:
 
 
 def _reference_label(cfg, key: str) -> str:
-    """A check's load key, 'item["Upper Truss"].check["column_buckling"].load' -> "Upper Truss / column_buckling (load)"."""
+    """A check's load key, 'item["Upper Truss"].check["column_buckling"].load' -> "Upper Truss / column buckling (load)"."""
     for item in cfg.items:
         for check in item.checks:
             if key.startswith(check.where + "."):
-                return f"{item.name} / {check.kind} ({key[len(check.where) + 1:]})"
+                return f"{item.name} / {check.kind.replace('_', ' ')} ({key[len(check.where) + 1:]})"
     return key
 
 

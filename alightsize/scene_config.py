@@ -366,10 +366,18 @@ def _controls(node: Node | None, mass: float, legs: list[TelescopingLeg | Articu
 
 def impact_conditions(cfg: SceneConfig) -> dict:
     """What a reader asks of a landing case, in SI: the sink speed along gravity, the speed across it, the
-    terrain slope (angle between the terrain normal and the vertical) and the friction coefficients."""
+    terrain slope (angle between the terrain normal and the vertical), the angle of the horizontal velocity
+    from the downhill direction (0 downhill, 180 uphill; None on level ground or with no horizontal speed) and
+    the friction coefficients."""
     g = cfg.scene.gravity / np.linalg.norm(cfg.scene.gravity)
     v = cfg.scene.v0
     down = float(v @ g)
-    return {"vertical_m_s": down, "horizontal_m_s": float(np.linalg.norm(v - down * g)),
-            "slope_deg": float(np.degrees(np.arccos(np.clip(-g[2], -1.0, 1.0)))),
+    v_h = v - down * g
+    downhill = np.array([0.0, 0.0, 1.0]) - g * g[2]         # the terrain normal, less its vertical part, points downhill
+    heading = None
+    if np.linalg.norm(downhill) > 1e-9 and np.linalg.norm(v_h) > 1e-9:
+        cos = v_h @ downhill / (np.linalg.norm(v_h) * np.linalg.norm(downhill))
+        heading = float(np.degrees(np.arccos(np.clip(cos, -1.0, 1.0))))
+    return {"vertical_m_s": down, "horizontal_m_s": float(np.linalg.norm(v_h)),
+            "slope_deg": float(np.degrees(np.arccos(np.clip(-g[2], -1.0, 1.0)))), "from_downhill_deg": heading,
             "mu_static": float(cfg.scene.mu_static), "mu_dynamic": float(cfg.scene.mu_dynamic)}

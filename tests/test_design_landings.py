@@ -101,7 +101,7 @@ def test_the_report_defines_every_landing_and_names_the_governing_one(design, re
     section = html.split('<h2 id="landings">')[1].split("<h2")[0]
     for r in design.landings.rows:
         row = section.split(f'<tr id="landing-{r["run_id"]}">')[1].split("</tr>")[0]
-        assert r["outcome_class"].replace("_", " ") in row and "35.0 ft/s down, 15.0 ft/s across" in row
+        assert r["outcome_class"].replace("_", " ") in row and "35.0 ft/s down, 15.0 ft/s horizontal" in row
         assert f"{r['peak_xdd3_g']:.2f}" in row and ("fails" in row) == (not _meets_sec_ii(r))
     governing = {ref.extreme.configuration.removeprefix(LANDING) for ref in design.load_refs
                  if ref.extreme and ref.extreme.configuration.startswith(LANDING)}
@@ -124,3 +124,18 @@ def test_landings_declared_as_load_cases_only_say_so_and_pass_on_the_checks(tmp_
     assert r.returncode == 0 and "landings used as load cases only" in r.stdout
     html = (tmp_path / "o" / "report.html").read_text()
     assert "These landings are load cases only" in html and 'fail">fails</span>' in html
+
+
+def test_a_landing_says_whether_it_runs_downhill_or_uphill():
+    """The study's slope sign (-20 deg: the horizontal velocity runs into the slope, Sec. IV.B) and the
+    conditions the report prints agree: uphill at -20, downhill at +20, level ground at 0; the slope itself is
+    the angle between the terrain normal and the vertical, 20 deg (tolerance: float rounding)."""
+    from alightsize.design import run_design
+    from alightsize.design_config import read_design
+    from alightsize.report import landing_rows
+    landed = run_design(read_design(EXAMPLES / "articulated_3457_envelopes.toml")).config
+    for row, c in zip(landing_rows(landed, "US").values(), landed.landings.conditions):
+        slope = float(row["parameters"].split("slope ")[1].split(" deg")[0])
+        assert c["slope_deg"] == pytest.approx(abs(slope), abs=1e-9)
+        want = {-20.0: "uphill on a 20° slope", 0.0: "horizontal on level ground", 20.0: "downhill on a 20° slope"}
+        assert want[slope] in row["conditions"], row

@@ -180,4 +180,4 @@ def test_report_labels_a_checks_load_key_by_item_and_kind():
     cfg = read_design(EXAMPLES / "articulated_3457.toml")
     truss = cfg.items[0]
     assert truss.checks[1].where == 'item["Upper Truss"].check["column_buckling"]'
-    assert _reference_label(cfg, truss.checks[1].where + ".load") == "Upper Truss / column_buckling (load)"
+    assert _reference_label(cfg, truss.checks[1].where + ".load") == "Upper Truss / column buckling (load)"
