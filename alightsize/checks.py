@@ -12,6 +12,7 @@ from . import plates, stress
 from .config import Node
 from .materials import Material
 from .sections import Section
+from .units import fmt
 
 
 @dataclass(frozen=True)
@@ -370,6 +371,26 @@ STANDS_IN: dict[str, dict[str, str]] = {
     "plate_annular_uniform_pressure": {**_PLATE, "inner_radius": "inner_diameter"},
     "plate_supported_eccentric_and_distributed": {**_PLATE, "radius_tangential": "diameter"},
 }
+
+
+def _length(x: float) -> str:
+    return f"{fmt(x, 'length', 'US')} ({fmt(x, 'length', 'SI')})"
+
+
+def out_of_range(check: Check, section: Section) -> tuple[str, str, str] | None:
+    """(key, expected, found) when a check's own geometry leaves its formula's domain: a local-buckling wall
+    of the tube's outside radius or more, a plate load circle or inner radius not below the plate radius."""
+    p = check.params
+    if check.kind == "local_buckling":
+        r = section.outside_diameter / 2           # the section's own wall is checked where it is read
+        if p["t"] is not None and p["t"] >= r:
+            return "wall", f"a wall below the tube's outside radius {_length(r)}", _length(p["t"])
+    elif check.kind.startswith("plate_"):
+        a, _ = _plate_geometry(p, section)
+        for key, name, words in (("load_radius", "r0", "a load radius"), ("inner_radius", "b", "an inner radius")):
+            if p.get(name) is not None and p[name] >= a:
+                return key, f"{words} below the plate radius {_length(a)}", _length(p[name])
+    return None
 
 
 def read_check(node: Node) -> Check:

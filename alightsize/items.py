@@ -6,7 +6,7 @@ from dataclasses import dataclass, replace
 from math import inf
 
 from . import units
-from .checks import Check, Outcome, read_check, KINDS
+from .checks import KINDS, Check, Outcome, out_of_range, read_check
 from .config import Node
 from .errors import InputError
 from .materials import Material, lookup, require
@@ -113,6 +113,10 @@ def _validate(item: Item, node: Node) -> None:
         where = InputError(node.file, check.where, "", "")
         for prop in KINDS[check.kind][2]:
             require(item.material, prop, where)
+        bad = out_of_range(check, item.section)
+        if bad:
+            key, expected, found = bad
+            raise InputError(node.file, f"{check.where}.{key}", expected, found)
         try:
             check.evaluate(item.section, item.material)
         except (KeyError, AttributeError, TypeError) as exc:
@@ -120,6 +124,7 @@ def _validate(item: Item, node: Node) -> None:
                              f"(shapes: {', '.join(SHAPES)})", f"missing {exc}") from None
         except (ValueError, ZeroDivisionError) as exc:
             raise InputError(node.file, check.where, "geometry for which the formula is defined", str(exc)) from None
+
     if item.weight is not None:
         try:
             w, _ = item.weight_each()
