@@ -12,14 +12,15 @@ import traceback
 import warnings
 from pathlib import Path
 
-from . import __version__
-from .errors import InputError, InputWarning
-from .resources import data_dir
+from alightsize import __version__
+from alightsize.common.errors import InputError, InputWarning
+from alightsize.common.resources import data_dir
 
 
 def _design(args) -> int:
-    from .design import run_design, write_design
-    from .design_config import read_design
+    from alightsize.pipeline.design import run_design
+    from alightsize.reports.design_report import write_design
+    from alightsize.pipeline.config import read_design
     res = run_design(read_design(args.config, Path(args.out) / "landings"))
     files = write_design(res, Path(args.out))
     print(f"{res.config.configuration}: {res.verdict()}")
@@ -28,10 +29,10 @@ def _design(args) -> int:
 
 
 def _audit(args) -> int:
-    from .atomic import write_atomic
-    from .audit import audit_json, audit_table, failure_label, junit_xml
-    from .design import run_design
-    from .design_config import read_design
+    from alightsize.common.atomic import write_atomic
+    from alightsize.checks.audit import audit_json, audit_table, failure_label, junit_xml
+    from alightsize.pipeline.design import run_design
+    from alightsize.pipeline.config import read_design
     res = run_design(read_design(args.config))
     print(audit_table(res.records))
     print("OK" if res.checks_ok else "FAILED: " + ", ".join(failure_label(r) for r in res.records if not r.ok))
@@ -46,9 +47,9 @@ def _audit(args) -> int:
 
 def _loads(args) -> int:
     import time
-    from .loads import run_loads
-    from .loads_config import read_loads
-    from .loads_output import write_loads
+    from alightsize.loads.quasi_static import run_loads
+    from alightsize.loads.config import read_loads
+    from alightsize.reports.loads_report import write_loads
     cfg = read_loads(args.config)
     t0 = time.perf_counter()
     res = run_loads(cfg)
@@ -62,8 +63,8 @@ def _loads(args) -> int:
 
 
 def _simulate(args) -> int:
-    from .landing_output import summary, write_landing
-    from .scene_config import read_scene
+    from alightsize.landings.output import summary, write_landing
+    from alightsize.model.scene_config import read_scene
     from alightsize_sim.landing import simulate
     cfg = read_scene(args.scene)
     res = simulate(cfg.scene, cfg.controls)
@@ -77,9 +78,9 @@ def _simulate(args) -> int:
 
 
 def _sweep(args) -> int:
-    from .study import read_study
-    from .sweep import run_sweep
-    from .sweep_report import write_results
+    from alightsize.landings.study import read_study
+    from alightsize.landings.sweep import run_sweep
+    from alightsize.reports.sweep_report import write_results
     study = read_study(args.study)
     out = Path(args.out)
     backend = "serial" if args.serial else "dask" if (args.scheduler or args.dask_local) else "pool"
@@ -105,7 +106,7 @@ def _sweep(args) -> int:
 
 
 def _bench(args) -> int:
-    from .bench import run_bench, write_bench
+    from alightsize.landings.bench import run_bench, write_bench
     data = run_bench(quick=args.quick, progress=lambda msg: print(msg, flush=True))
     files = write_bench(data, Path(args.out))
     print("wrote " + ", ".join(str(f) for f in files))
@@ -113,8 +114,8 @@ def _bench(args) -> int:
 
 
 def _scale(args) -> int:
-    from .atomic import write_atomic
-    from .scaling import table27
+    from alightsize.common.atomic import write_atomic
+    from alightsize.weights.scaling import table27
     if not all(math.isfinite(v) and v > 0 for v in (args.length, args.mass)):
         raise InputError("(command line)", "--length/--mass", "finite positive scale factors",
                          f"length {args.length}, mass {args.mass}")
@@ -130,8 +131,9 @@ def _scale(args) -> int:
 
 
 def _reports(args) -> int:
-    from .design import run_design, write_design
-    from .design_config import read_design
+    from alightsize.pipeline.design import run_design
+    from alightsize.reports.design_report import write_design
+    from alightsize.pipeline.config import read_design
     configs = sorted(Path(args.examples).glob("*.toml"))
     if not configs:
         raise InputError(args.examples, "", "a folder of design configs (*.toml)", "none")
@@ -140,7 +142,7 @@ def _reports(args) -> int:
         write_design(res, Path(args.out) / cfg.stem)
         print(f"{cfg.stem}: {res.verdict()}")
     if (Path(args.examples) / "drops").is_dir():
-        from .drop_report import write_drop_report
+        from alightsize.reports.drop_report import write_drop_report
         write_drop_report(Path(args.out) / "drops", Path(args.examples) / "drops")
         print("drops: simulated drop tests beside Tables 6-13 (drops.html, drops.md, drops.json)")
     return 0

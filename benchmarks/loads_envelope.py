@@ -21,8 +21,8 @@ from pathlib import Path  # noqa: E402
 
 import numpy as np  # noqa: E402
 
-from alightsize.load_envelopes import cell_forces, envelope  # noqa: E402
-from alightsize.loads_config import read_loads  # noqa: E402
+from alightsize.loads.envelopes import cell_forces, envelope  # noqa: E402
+from alightsize.loads.config import read_loads  # noqa: E402
 from alightsize_sim.articulated_statics import reactions  # noqa: E402
 
 CONFIG = Path(__file__).resolve().parent.parent / "examples" / "affdl-tr-66-33" / "loads" / "articulated.toml"
@@ -56,7 +56,7 @@ def main() -> None:
     rm = reactions(case.geometry, A, B, P, af1, af2, method="matrix")
     scale = np.maximum(np.maximum(af1, af2), 1.0)
     diff = max(float(np.max(np.abs(getattr(rc, k) - getattr(rm, k)) / scale)) for k in ("F1", "F3", "Q1", "Q2", "R11", "R12"))
-    out = {"schema": "alightsize.bench-loads/1", "machine": {"python": platform.python_version(), "numpy": np.__version__,
+    out = {"schema": "alightsize.landings.bench-loads/1", "machine": {"python": platform.python_version(), "numpy": np.__version__,
                                                              "cores_used": 1},
            "configuration": case.name, "positions": n, "envelope_wall_s": t_env,
            "positions_per_s": n / t_env, "reactions_closed_wall_s": t_closed, "reactions_matrix_wall_s": t_matrix,

@@ -1,5 +1,5 @@
 """Robustness sweep of the landing simulator: N seeded random landings about configuration 1
-(alightsize.random_landings), each run to its outcome or t_final, on a process pool.
+(alightsize.landings.random_landings), each run to its outcome or t_final, on a process pool.
 
 Reports the outcome counts, failures (must be none), the worst energy closure, and the wall time per landing
 and per simulated second. Usage: python benchmarks/random_scenes.py [-n 1000] [--t-final 1.0] [--workers 2]
@@ -20,8 +20,8 @@ from pathlib import Path
 
 import numpy as np
 
-from alightsize.random_landings import random_landing
-from alightsize.scene_config import read_scene
+from alightsize.landings.random_landings import random_landing
+from alightsize.model.scene_config import read_scene
 from alightsize_sim.landing import simulate
 
 BASE = Path(__file__).resolve().parent.parent / "examples" / "affdl-tr-66-33" / "scenes" / "telescoping_config1.toml"

@@ -17,8 +17,8 @@ import tempfile
 import time
 from pathlib import Path
 
-from alightsize.study import read_study
-from alightsize.sweep import run_sweep
+from alightsize.landings.study import read_study
+from alightsize.landings.sweep import run_sweep
 
 STUDY = Path(__file__).resolve().parent.parent / "examples" / "affdl-tr-66-33" / "studies" / "config5_monte_carlo.toml"
 

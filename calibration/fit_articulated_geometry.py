@@ -5,7 +5,7 @@ the other dimensions of Fig. 22-25. They are reconstructed here from what the re
 configuration 3:
 
 - Table 14 (l. 3657-3677): the maximum tension and compression of every member with the position
-  (alpha, beta, psi) where it occurs, computed by the model of `alightsize.load_envelopes` over the
+  (alpha, beta, psi) where it occurs, computed by the model of `alightsize.loads.envelopes` over the
   default grid (alpha by 1 deg, beta -175..180 by 5, psi -15..+30 by 1; alpha range below);
 - Fig. 10 (l. 734-736): the parallelogram force ratio sin(eta - psi) / cos(psi) (vertical footpad force
   per upper cell force, peg leg locked) 0.55 at psi = -30 deg and 0.40 at +30 deg; the peg-leg ratio
@@ -64,7 +64,7 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path[:0] = [str(ROOT), str(ROOT / "tests")]
 
 import reference_tables_14_22 as ref  # noqa: E402
-from alightsize.load_envelopes import Grid, LegCase, cell_forces, default_grid, member_fields  # noqa: E402
+from alightsize.loads.envelopes import Grid, LegCase, cell_forces, default_grid, member_fields  # noqa: E402
 from alightsize_sim.articulated_cells import lower_deflection, lower_lever, upper_deflection, upper_lever  # noqa: E402
 from alightsize_sim.articulated_kinematics import ArticulatedGeometry  # noqa: E402
 from alightsize_sim.articulated_statics import TrussAngles, member_loads, reactions  # noqa: E402

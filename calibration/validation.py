@@ -35,7 +35,7 @@ sys.path.insert(0, str(HERE))
 
 import fit_articulated_geometry as fit  # noqa: E402  (puts the repository and tests/ on sys.path)
 import reference_tables_14_22 as ref  # noqa: E402
-from alightsize.load_envelopes import cell_forces, default_grid, member_fields  # noqa: E402
+from alightsize.loads.envelopes import cell_forces, default_grid, member_fields  # noqa: E402
 from alightsize_sim.articulated_cells import upper_deflection  # noqa: E402
 
 OUT = HERE / "validation.md"

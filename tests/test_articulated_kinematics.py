@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from alightsize.loads_config import read_loads
+from alightsize.loads.config import read_loads
 from conftest import EXAMPLES
 from alightsize_sim.articulated_kinematics import (ArticulatedGeometry, Unreachable, footpad, inverse, nearest_root, residual,
                                        roots)

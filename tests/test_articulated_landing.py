@@ -10,9 +10,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from alightsize.landing_output import outcome
-from alightsize.scene_config import read_scene
-from alightsize.study import agrees, outcome_class, read_study
+from alightsize.landings.output import outcome
+from alightsize.model.scene_config import read_scene
+from alightsize.landings.study import agrees, outcome_class, read_study
 from alightsize_sim import articulated_leg
 from alightsize_sim.articulated_cells import upper_length
 from alightsize_sim.articulated_kinematics import footpad, nearest_root, roots

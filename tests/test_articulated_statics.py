@@ -4,7 +4,7 @@ against the footpad kinematics, truss joint equilibrium."""
 import numpy as np
 import pytest
 
-from alightsize.loads_config import read_loads
+from alightsize.loads.config import read_loads
 from alightsize_sim.articulated_cells import lower_deflection, upper_deflection
 from alightsize_sim.articulated_kinematics import footpad
 from alightsize_sim.articulated_statics import member_loads, reactions, residuals
@@ -80,8 +80,8 @@ def test_envelopes_follow_the_scaling_laws():
     # x 1.825/4 (length_scale); scaling config 3 the same way must give config-3 loads x F at the same
     # positions (to rounding, 1e-12).
     from dataclasses import replace
-    from alightsize.load_envelopes import envelope
-    from alightsize.loads_config import LENGTHS
+    from alightsize.loads.envelopes import envelope
+    from alightsize.model.legs import LENGTHS
     from alightsize_sim.crush_curve import CrushCurve
     L, F = 1.825 / 4, 0.1                      # F arbitrary (the 300 lb capsule: mass ratio 0.1)
     case = CFG.cases[0]

@@ -8,9 +8,9 @@ import shutil
 
 import pytest
 
-from alightsize.design_config import read_design
-from alightsize.errors import InputError
-from alightsize.landing_loads import LANDING, quasi_static_load
+from alightsize.pipeline.config import read_design
+from alightsize.common.errors import InputError
+from alightsize.pipeline.landings import LANDING, quasi_static_load
 
 from conftest import EXAMPLES
 
@@ -130,9 +130,9 @@ def test_a_landing_says_whether_it_runs_downhill_or_uphill():
     """The study's slope sign (-20 deg: the horizontal velocity runs into the slope, Sec. IV.B) and the
     conditions the report prints agree: uphill at -20, downhill at +20, level ground at 0; the slope itself is
     the angle between the terrain normal and the vertical, 20 deg (tolerance: float rounding)."""
-    from alightsize.design import run_design
-    from alightsize.design_config import read_design
-    from alightsize.report import landing_rows
+    from alightsize.pipeline.design import run_design
+    from alightsize.pipeline.config import read_design
+    from alightsize.reports.design_report import landing_rows
     landed = run_design(read_design(EXAMPLES / "articulated_3457_envelopes.toml")).config
     for row, c in zip(landing_rows(landed, "US").values(), landed.landings.conditions):
         slope = float(row["parameters"].split("slope ")[1].split(" deg")[0])

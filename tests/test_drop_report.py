@@ -1,4 +1,4 @@
-"""The drop-test comparison report (alightsize.drop_report): printed Tables 6-13 read as printed, the simulated
+"""The drop-test comparison report (alightsize.reports.drop_report): printed Tables 6-13 read as printed, the simulated
 energy error against the drop energy, drops without a table, SI unit-suffixed JSON, escaping, and the shipped
 reports/affdl-tr-66-33/drops/ current. The landings are the ones tests/test_drops.py runs (run_drop caches them)."""
 
@@ -10,9 +10,9 @@ import math
 
 import pytest
 
-from alightsize.drop_report import DROP_NUMBERS, document, plot_energy, render, run_drop
+from alightsize.reports.drop_report import DROP_NUMBERS, document, plot_energy, render, run_drop
 from conftest import ROOT
-from alightsize.drop_tables import STROKES_ENERGIES
+from alightsize.reports.drop_tables import STROKES_ENERGIES
 
 REPORT = ROOT / "reports" / "affdl-tr-66-33" / "drops"
 J_PER_FT_LB = 0.3048 * 0.45359237 * 9.80665          # ft x lbf (lb 0.45359237 kg, g0 9.80665 m/s^2), exact

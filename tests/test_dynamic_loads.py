@@ -1,14 +1,14 @@
-"""Member loads along a simulated landing (alightsize.dynamic_loads): the recovered leg shapes against the
+"""Member loads along a simulated landing (alightsize.loads.histories): the recovered leg shapes against the
 history, the dynamic loads against the quasi-static envelope functions where the cells crush, equilibrium
 with the simulated ground force, and the envelope against the history's extremes."""
 
 import numpy as np
 import pytest
 
-from alightsize.dynamic_loads import dynamic_envelope, leg_histories, member_histories
-from alightsize.load_envelopes import cell_forces
-from alightsize.loads_config import read_loads
-from alightsize.scene_config import read_scene
+from alightsize.loads.histories import dynamic_envelope, leg_histories, member_histories
+from alightsize.loads.envelopes import cell_forces
+from alightsize.loads.config import read_loads
+from alightsize.model.scene_config import read_scene
 from alightsize_sim.articulated_cells import lower_deflection, lower_force_components, upper_deflection
 from alightsize_sim.articulated_kinematics import footpad
 from alightsize_sim.articulated_leg import SEAT

@@ -8,10 +8,10 @@ from pathlib import Path
 
 import pytest
 
-from alightsize.config import Node
-from alightsize.design_config import read_design
-from alightsize.errors import InputWarning
-from alightsize.sections import read_section
+from alightsize.common.config import Node
+from alightsize.pipeline.config import read_design
+from alightsize.common.errors import InputWarning
+from alightsize.model.sections import read_section
 from conftest import CONFIGS, EXAMPLES, ROOT
 
 SIZED = ROOT / "examples" / "sizing" / "articulated_3457_sized.toml"
@@ -153,7 +153,7 @@ SCENES = EXAMPLES / "scenes"
 
 @pytest.mark.parametrize("v3", ["2 m/s", "0.1 ft/s"])
 def test_upward_initial_velocity_warns_and_is_kept(v3):
-    from alightsize.scene_config import read_scene
+    from alightsize.model.scene_config import read_scene
     scene = SCENES / "flat_drop.toml"
     with pytest.warns(InputWarning) as caught:
         cfg = read_scene(scene, {"initial.velocity[2]": v3})
@@ -163,7 +163,7 @@ def test_upward_initial_velocity_warns_and_is_kept(v3):
 
 
 def test_shipped_scenes_descend_without_warnings():
-    from alightsize.scene_config import read_scene
+    from alightsize.model.scene_config import read_scene
     with warnings.catch_warnings():
         warnings.simplefilter("error", InputWarning)
         for scene in sorted(SCENES.glob("*.toml")):
@@ -186,7 +186,7 @@ def test_key_paths_name_items_and_checks(tmp_path):
 
 
 def test_report_labels_a_checks_load_key_by_item_and_kind():
-    from alightsize.report import _reference_label
+    from alightsize.reports.design_report import _reference_label
     cfg = read_design(EXAMPLES / "articulated_3457.toml")
     truss = cfg.items[0]
     assert truss.checks[1].where == 'item["Upper Truss"].check["column_buckling"]'

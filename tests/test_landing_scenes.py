@@ -10,9 +10,9 @@ import pandas as pd
 import pytest
 
 from alightsize.cli import main
-from alightsize.landing_output import history_frame
-from alightsize.random_landings import random_landing
-from alightsize.scene_config import read_scene
+from alightsize.landings.output import history_frame
+from alightsize.landings.random_landings import random_landing
+from alightsize.model.scene_config import read_scene
 from alightsize_sim.landing import G0, simulate
 from alightsize_sim.rigid_body import quat_matrix
 
@@ -213,9 +213,9 @@ def test_table2_study_runs_every_run_and_reports_agreement(tmp_path):
     40 lets harmless numerical changes move a marginal run or two, while losing the calibration (16 of 56
     with the attachment 0.5 ft below the CG) or the slope sign of eq. 1 (at most 32 of 56 with it
     reversed) fails."""
-    from alightsize.study import read_study
-    from alightsize.sweep import run_sweep
-    from alightsize.sweep_report import write_results
+    from alightsize.landings.study import read_study
+    from alightsize.landings.sweep import run_sweep
+    from alightsize.reports.sweep_report import write_results
     study = read_study("examples/affdl-tr-66-33/studies/table2.toml")
     assert len(study.runs) == 56 and len({r.run_id for r in study.runs}) == 56
     stats = run_sweep(study, tmp_path, "pool", workers=2, quiet=True)
@@ -231,8 +231,8 @@ def test_table2_study_runs_every_run_and_reports_agreement(tmp_path):
 
 def test_study_input_errors_name_file_and_key(tmp_path):
     """A study whose run table names a configuration with no scene is an InputError (exit 2 material)."""
-    from alightsize.errors import InputError
-    from alightsize.study import read_study
+    from alightsize.common.errors import InputError
+    from alightsize.landings.study import read_study
     (tmp_path / "runs.csv").write_text("run,configuration\nA,7\n")
     (tmp_path / "s.toml").write_text(f'[study]\nname = "s"\n[scenes]\n0 = "{Path(SCENES).resolve()}/flat_drop.toml"\n'
                                      '[runs]\ntable = "runs.csv"\nscene = "configuration"\n')
@@ -244,8 +244,8 @@ def test_study_input_errors_name_file_and_key(tmp_path):
 def test_study_bad_value_fails_only_its_run(tmp_path):
     """A run-table value that makes a bad scene value fails that run, stored with a message naming the scene
     key; the study goes on."""
-    from alightsize.study import read_study
-    from alightsize.sweep import run_sweep
+    from alightsize.landings.study import read_study
+    from alightsize.landings.sweep import run_sweep
     (tmp_path / "runs.csv").write_text("run,configuration,slope\nR1,0,steep\nR2,0,5\n")
     (tmp_path / "s.toml").write_text(f'[study]\nname = "s"\n[scenes]\n0 = "{Path(SCENES).resolve()}/flat_drop.toml"\n'
                                      '[runs]\ntable = "runs.csv"\nscene = "configuration"\n'

@@ -10,9 +10,9 @@ import pytest
 from openpyxl import load_workbook
 
 from alightsize.cli import main
-from alightsize.load_envelopes import member_fields
-from alightsize.loads import run_loads
-from alightsize.loads_config import read_loads
+from alightsize.loads.envelopes import member_fields
+from alightsize.loads.quasi_static import run_loads
+from alightsize.loads.config import read_loads
 from alightsize_sim.articulated_statics import MEMBERS
 
 from conftest import EXAMPLES

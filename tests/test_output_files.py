@@ -6,7 +6,7 @@ import stat
 
 import pytest
 
-from alightsize.atomic import write_atomic
+from alightsize.common.atomic import write_atomic
 from alightsize.cli import main
 from conftest import EXAMPLES
 

@@ -10,9 +10,9 @@ from functools import lru_cache
 import numpy as np
 import pytest
 
-from alightsize.load_envelopes import cell_forces
-from alightsize.loads import run_loads
-from alightsize.loads_config import read_loads
+from alightsize.loads.envelopes import cell_forces
+from alightsize.loads.quasi_static import run_loads
+from alightsize.loads.config import read_loads
 from alightsize_sim.articulated_cells import lower_lever, upper_lever
 from alightsize_sim.articulated_statics import member_loads, reactions
 

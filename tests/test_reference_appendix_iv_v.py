@@ -9,9 +9,9 @@ from pathlib import Path
 
 import pytest
 
-from alightsize.audit import run_audit
-from alightsize.design import run_design
-from alightsize.design_config import read_design
+from alightsize.checks.audit import run_audit
+from alightsize.pipeline.design import run_design
+from alightsize.pipeline.config import read_design
 from reference_data import CRITICAL, DESIGN_FACTORS, PRINTED_STRESSES, TABLES
 
 LB = 0.45359237                 # kg

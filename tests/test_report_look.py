@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import re
 
-from alightsize.report import template_env
+from alightsize.reports.rendering import template_env
 
 
 def test_pictures_shrink_to_the_page():
@@ -17,8 +17,8 @@ def test_pictures_shrink_to_the_page():
 
 def test_a_raised_length_is_substituted_in_parentheses():
     """t² with t = 4.98 in reads (4.980 in)², never 4.980 in² (an area); a bare number needs none."""
-    from alightsize.checks import Step
-    from alightsize.report import _step
+    from alightsize.common.trace import Step
+    from alightsize.reports.design_report import _step
     inch = 0.0254
     step = Step("Strip", "A", "{n} {t}² + {m}²", (("n", 10.0, "dimensionless"), ("t", 4.98 * inch, "length"),
                                                 ("m", 3.0, "dimensionless")), 0.0, "area")
@@ -27,14 +27,14 @@ def test_a_raised_length_is_substituted_in_parentheses():
 
 
 def _disc(**p):
-    from alightsize.weights import WeightSpec
+    from alightsize.weights.methods import WeightSpec
     params = {"rho": 2768.0, "length": None, "allowance": 0.0, "extra": 0.1, "diameter": 0.08, "thickness": 0.01,
               "inner_diameter": 0.0, "holes": 0, "hole_diameter": None, **p}
     return WeightSpec("disc", params, "item[0].weight").evaluate(None, None, None)
 
 
 def test_a_plain_disc_weight_has_no_empty_cut_out_terms():
-    from alightsize.report import _step
+    from alightsize.reports.design_report import _step
     _, steps = _disc()
     line = _step(steps[0], "US")
     assert "dh" not in line["formula"] and "di" not in line["formula"]
@@ -46,9 +46,9 @@ def test_a_plain_disc_weight_has_no_empty_cut_out_terms():
 
 def test_a_given_value_is_not_stated_as_its_own_formula():
     """ΔW (extra) and Pallow are inputs: the sheet says so instead of "ΔW = ΔW"."""
-    from alightsize.design import run_design
-    from alightsize.design_config import read_design
-    from alightsize.report import render_html, render_markdown
+    from alightsize.pipeline.design import run_design
+    from alightsize.pipeline.config import read_design
+    from alightsize.reports.design_report import render_html, render_markdown
     from conftest import EXAMPLES
     res = run_design(read_design(EXAMPLES / "telescoping.toml"))
     symbols = {s.symbol for w in res.weights for s in w.steps} | {s.symbol for r in res.records for s in r.outcome.steps}
@@ -58,9 +58,9 @@ def test_a_given_value_is_not_stated_as_its_own_formula():
 
 def test_a_check_heading_names_its_failure_mode_once():
     """'compression (compression)' says one thing twice; a different failure mode still shows."""
-    from alightsize.design import run_design
-    from alightsize.design_config import read_design
-    from alightsize.report import render_html, render_markdown
+    from alightsize.pipeline.design import run_design
+    from alightsize.pipeline.config import read_design
+    from alightsize.reports.design_report import render_html, render_markdown
     from conftest import EXAMPLES
     res = run_design(read_design(EXAMPLES / "articulated_3457.toml"))
     heads = re.findall(r'<th colspan="4">([^<]*)</th>', render_html(res))
@@ -95,9 +95,9 @@ def _kept(monkeypatch) -> list:
 
 
 def test_heat_map_colorbars_stay_off_the_next_panel(tmp_path, monkeypatch):
-    from alightsize import loads_output
-    from alightsize.loads import run_loads
-    from alightsize.loads_config import read_loads
+    from alightsize.reports import loads_report as loads_output
+    from alightsize.loads.quasi_static import run_loads
+    from alightsize.loads.config import read_loads
     from conftest import EXAMPLES
     res = run_loads(read_loads(EXAMPLES / "loads" / "articulated.toml"))
     figs = _kept(monkeypatch)
@@ -108,8 +108,8 @@ def test_heat_map_colorbars_stay_off_the_next_panel(tmp_path, monkeypatch):
 def test_landing_plots_keep_their_labels_and_a_short_legend(tmp_path, monkeypatch):
     """The shock spectrum's axis labels are inside the picture; the stroke plot's legend names legs and cell
     kinds (not every cell of every leg) and sits beside the plot, not over it."""
-    from alightsize.landing_output import plots
-    from alightsize.scene_config import read_scene
+    from alightsize.landings.output import plots
+    from alightsize.model.scene_config import read_scene
     from alightsize_sim.landing import simulate
     from conftest import EXAMPLES
     cfg = read_scene(EXAMPLES / "scenes" / "telescoping_config2.toml")
@@ -129,7 +129,7 @@ def test_landing_plots_keep_their_labels_and_a_short_legend(tmp_path, monkeypatc
 def test_sweep_axes_are_the_parameters_as_written(tmp_path, monkeypatch):
     """A grid written in ft/s and deg is plotted in ft/s and deg, labelled with the scene key."""
     import json
-    from alightsize.sweep_report import boundary_plot
+    from alightsize.reports.sweep_report import boundary_plot
     rows = [{"params_json": json.dumps({"initial.velocity[1]": f"{v} ft/s", "terrain.slope": f"{a} deg"}),
              "outcome": "stable" if v < 10 else "tipped"} for v in (5, 10, 15) for a in (-10, 10)]
     figs = _kept(monkeypatch)
@@ -142,7 +142,7 @@ def test_sweep_axes_are_the_parameters_as_written(tmp_path, monkeypatch):
 
 def test_matrix_legend_names_only_this_studys_outcomes():
     """A telescoping study's matrix legend does not explain the articulated legs' α and ψ cells."""
-    from alightsize.sweep_report import SYMBOL, matrix_legend
+    from alightsize.reports.sweep_report import SYMBOL, matrix_legend
     doc = {"run_list": [{"outcome_class": "stable", "reference_class": "tipped"},
                         {"outcome_class": "bottomed_rotational_pad", "reference_class": None}]}
     legend = " · ".join(matrix_legend(doc))

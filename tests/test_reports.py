@@ -7,9 +7,9 @@ import pytest
 from openpyxl import load_workbook
 
 from alightsize.cli import main
-from alightsize.design import run_design
-from alightsize.design_config import read_design
-from alightsize.report import render_html, render_markdown, write_workbook
+from alightsize.pipeline.design import run_design
+from alightsize.pipeline.config import read_design
+from alightsize.reports.design_report import render_html, render_markdown, write_workbook
 from conftest import CONFIGS, EXAMPLES, ROOT
 
 REPORTS = ROOT / "reports" / "affdl-tr-66-33"
@@ -25,16 +25,19 @@ def test_reference_reports_are_not_stale(tmp_path):
     for name in CONFIGS:
         for f in ("summary.json", "report.md", "report.html"):
             assert (tmp_path / name / f).read_text() == (REPORTS / name / f).read_text(), f"{name}/{f} is stale"
-        # XLSX files carry save times; compare the cell contents. PNG bytes depend on the matplotlib build.
+        # Workbook and PNG bytes depend on the openpyxl and matplotlib builds: compare the cells.
         assert _cells(tmp_path / name / "design.xlsx") == _cells(REPORTS / name / "design.xlsx")
         for png in ("design_factors.png", "weights.png"):
             assert (REPORTS / name / png).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
 def test_same_input_same_output(tmp_path):
+    """Two runs of one config give the same bytes in every text and spreadsheet output (openpyxl stamps the
+    save time into each workbook unless told otherwise)."""
     for k in (1, 2):
         main(["design", str(EXAMPLES / "telescoping.toml"), "--out", str(tmp_path / str(k))])
-    assert (tmp_path / "1" / "summary.json").read_bytes() == (tmp_path / "2" / "summary.json").read_bytes()
+    for f in ("summary.json", "report.html", "report.md", "design.xlsx"):
+        assert (tmp_path / "1" / f).read_bytes() == (tmp_path / "2" / f).read_bytes(), f
 
 
 @pytest.fixture

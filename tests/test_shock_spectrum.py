@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from scipy.optimize import minimize_scalar
 
-from alightsize.shock_spectrum import default_frequencies, srs
+from alightsize.landings.shock_spectrum import default_frequencies, srs
 
 ZETA = 0.05
 

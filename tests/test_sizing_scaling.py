@@ -4,10 +4,10 @@ from math import pi
 
 import pytest
 
-from alightsize.design import run_design
-from alightsize.design_config import read_design
-from alightsize.scaling import (cushioning_weight_fraction, impact_energy_per_weight, scale_tree, table27)
-from alightsize.units import parse
+from alightsize.pipeline.design import run_design
+from alightsize.pipeline.config import read_design
+from alightsize.weights.scaling import (cushioning_weight_fraction, impact_energy_per_weight, scale_tree, table27)
+from alightsize.common.units import parse
 from conftest import ROOT
 
 SIZED = ROOT / "examples" / "sizing" / "articulated_3457_sized.toml"

@@ -15,13 +15,13 @@ import numpy as np
 import pytest
 
 from alightsize.cli import main
-from alightsize.config import Node
-from alightsize.dispersions import read_dispersion
-from alightsize.errors import InputError
-from alightsize.run_store import TIMING
-from alightsize.study import read_study
-from alightsize.sweep import run_sweep
-from alightsize.sweep_report import wilson, write_results
+from alightsize.common.config import Node
+from alightsize.landings.dispersions import read_dispersion
+from alightsize.common.errors import InputError
+from alightsize.landings.run_store import TIMING
+from alightsize.landings.study import read_study
+from alightsize.landings.sweep import run_sweep
+from alightsize.reports.sweep_report import wilson, write_results
 
 ROOT = Path(__file__).resolve().parent.parent
 SCENE = ROOT / "examples" / "affdl-tr-66-33" / "scenes" / "telescoping_config2.toml"
@@ -150,7 +150,7 @@ def test_a_run_that_raises_is_stored_failed_and_the_study_goes_on(tmp_path):
 
 def _crash_on_one_run(task):
     """A worker that dies (as on an out-of-memory kill) on one run; the others run normally."""
-    from alightsize import sweep
+    from alightsize.landings import sweep
     if task["run_id"] == "c2-1-1":
         os._exit(9)
     return sweep._real_execute(task)
@@ -158,7 +158,7 @@ def _crash_on_one_run(task):
 
 def test_a_dying_worker_loses_no_finished_run(tmp_path, monkeypatch):
     """The run that kills its worker is stored failed (after a retry alone); every other run is done."""
-    from alightsize import sweep
+    from alightsize.landings import sweep
     if "fork" not in __import__("multiprocessing").get_all_start_methods():
         pytest.skip("the injected crash reaches the workers through fork")
     monkeypatch.setattr(sweep, "_real_execute", sweep.execute, raising=False)

@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from alightsize.loads_config import read_loads
-from alightsize.telescoping_loads import free_body, side_loads, sliding_loads
+from alightsize.loads.config import read_loads
+from alightsize.loads.telescoping import free_body, side_loads, sliding_loads
 from alightsize_sim.telescoping_kinematics import footpad, pad_deflection, spherical
 
 from conftest import EXAMPLES

@@ -1,0 +1,394 @@
+"""Failure-mode checks of AFFDL-TR-66-33 App. IV: each reads its loads from a config table and
+evaluates, for a given section and material, the stress, the allowable and the design factor,
+keeping every formula with its substituted numbers for the stress sheets."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from math import pi, sqrt
+from typing import Callable
+
+from alightsize.checks import plates
+
+from alightsize.checks import stress
+from alightsize.common.config import Node
+from alightsize.common.trace import Step
+from alightsize.model.materials import Material
+from alightsize.model.sections import Section
+from alightsize.common.units import fmt
+
+
+@dataclass(frozen=True)
+class Outcome:
+    """What one check found: `stress`/`allowable` in Pa (None where the check is on loads only)."""
+
+    mode: str
+    load: float
+    stress: float | None
+    allowable: float | None
+    factor: float
+    steps: tuple[Step, ...]
+
+
+@dataclass(frozen=True)
+class Check:
+    """A parsed check: its kind, its SI parameters, the config key path it came from and the config keys
+    given in it that stand in for a section dimension (key -> dimension)."""
+
+    kind: str
+    params: dict
+    where: str
+    note: str = ""
+    replaces: dict[str, str] = field(default_factory=dict)
+
+    def evaluate(self, section: Section, material: Material) -> Outcome:
+        return KINDS[self.kind][1](self.params, section, material)
+
+
+def _p(node: Node, name: str, dim: str) -> float | None:
+    """An optional quantity: None when the key is absent (the section's value is used)."""
+    return node.quantity(name, dim, default=None)
+
+
+# ---------------------------------------------------------------- parameter readers
+
+def _read_load(node: Node) -> dict:
+    return {"P": node.quantity("load", "force")}
+
+
+def _read_moment(node: Node) -> dict:
+    """A moment given directly, or as force x arm (M = P l, App. IV)."""
+    if node.has("moment"):
+        return {"M": node.quantity("moment", "moment")}
+    if node.has("moment_force"):
+        return {"Mf": node.quantity("moment_force", "force"), "arm": node.quantity("moment_arm", "length")}
+    raise node.error("moment", "a moment (\"16150 lbf*in\") or moment_force and moment_arm", "neither")
+
+
+def _read_axial_and_moment(node: Node) -> dict:
+    return {**_read_load(node), **_read_moment(node)}
+
+
+def _read_buckling(node: Node) -> dict:
+    return {**_read_load(node), "L": node.quantity("length", "length")}
+
+
+def _read_local(node: Node) -> dict:
+    out = _read_load(node)
+    if node.has("moment") or node.has("moment_force"):
+        out.update(_read_moment(node))
+    out["t"] = _p(node, "wall", "length")
+    return out
+
+
+def _read_bearing(node: Node) -> dict:
+    return {"P": sum(node.parse_quantity("loads", v, "force") for v in _list(node, "loads")),
+            "d": node.quantity("diameter", "length"), "t": node.quantity("bearing_length", "length")}
+
+
+def _read_pin(node: Node) -> dict:
+    comps = [node.parse_quantity("loads", v, "force", positive=False) for v in _list(node, "loads")]
+    return {"components": tuple(comps), "allowable_load": node.quantity("allowable_load", "force")}
+
+
+def _read_ring(node: Node) -> dict:
+    return {"P": node.quantity("load", "force"), "span": node.quantity("span", "length")}
+
+
+def _read_cone(node: Node) -> dict:
+    return {"P": node.quantity("load", "force"), "t": node.quantity("thickness", "length")}
+
+
+def _read_plate(node: Node) -> dict:
+    return {"W": node.quantity("load", "force"), "r0": node.quantity("load_radius", "length"),
+            "a": _p(node, "radius", "length"), "t": _p(node, "thickness", "length")}
+
+
+def _read_plate_moment(node: Node) -> dict:
+    return {**_read_plate(node), **_read_moment(node), "pi_squared": node.boolean("pi_squared", False)}
+
+
+def _read_annular(node: Node) -> dict:
+    return {"q": node.quantity("pressure", "stress"), "a": _p(node, "radius", "length"),
+            "b": _p(node, "inner_radius", "length"), "t": _p(node, "thickness", "length")}
+
+
+def _read_eccentric(node: Node) -> dict:
+    return {"W": node.quantity("load", "force"), "W_total": node.quantity("distributed_load", "force"),
+            "p": node.quantity("load_offset", "length"), "r0": node.quantity("load_radius", "length"),
+            "a": _p(node, "radius", "length"), "a_t": _p(node, "radius_tangential", "length"),
+            "t": _p(node, "thickness", "length")}
+
+
+def _list(node: Node, name: str) -> list:
+    value = node.raw(name)
+    if not isinstance(value, list) or not value:
+        raise node.error(name, "a non-empty array of quantities", repr(value))
+    return value
+
+
+# ---------------------------------------------------------------- evaluators
+
+def _moment(p: dict) -> tuple[float, Step | None]:
+    if "M" in p:
+        return p["M"], None
+    m = p["Mf"] * p["arm"]
+    return m, Step("Moment", "M", "{P} {l}", (("P", p["Mf"], "force"), ("l", p["arm"], "length")), m, "moment")
+
+
+def _direct_step(load: float, area: float, label: str = "Compressive stress", symbol: str = "σc") -> Step:
+    """sigma = P / A as a stress-sheet line."""
+    return Step(label, symbol, "{P} / {A}", (("P", load, "force"), ("A", area, "area")),
+                stress.direct_stress(load, area), "stress")
+
+
+def _compression(p, s: Section, mat: Material, mode="compression", label="Compressive stress") -> Outcome:
+    step = _direct_step(p["P"], s.area(), label, "σ")
+    fy = mat.yield_strength
+    return Outcome(mode, p["P"], step.value, fy, stress.design_factor(fy, step.value), (step,))
+
+
+def _tension(p, s, mat) -> Outcome:
+    return _compression(p, s, mat, "tension", "Tensile stress")
+
+
+def _bending_steps(p, s) -> tuple[float, float, list[Step]]:
+    m, mstep = _moment(p)
+    i, c = s.inertia(), s.c()
+    sig = stress.bending_stress(m, c, i)
+    steps = [mstep] if mstep else []
+    steps.append(Step("Bending stress", "σB", "{M} {c} / {I}",
+                      (("M", m, "moment"), ("c", c, "length"), ("I", i, "second_moment")), sig, "stress"))
+    return m, sig, steps
+
+
+def _bending(p, s, mat) -> Outcome:
+    m, sig, steps = _bending_steps(p, s)
+    fy = mat.yield_strength
+    return Outcome("bending", m / s.c(), sig, fy, stress.design_factor(fy, sig), tuple(steps))
+
+
+def _combined_parts(p, s) -> tuple[float, list[Step]]:
+    direct = _direct_step(p["P"], s.area(), symbol="σC")
+    sc = direct.value
+    _, sb, steps = _bending_steps(p, s)
+    total = stress.combined_stress(sc, sb)
+    steps = [direct, *steps,
+             Step("Combined stress", "σmax", "{σB} + {σC}", (("σB", sb, "stress"), ("σC", sc, "stress")), total, "stress")]
+    return total, steps
+
+
+def _combined(p, s, mat) -> Outcome:
+    total, steps = _combined_parts(p, s)
+    fy = mat.yield_strength
+    return Outcome("combined", p["P"], total, fy, stress.design_factor(fy, total), tuple(steps))
+
+
+def _column(p, s, mat) -> Outcome:
+    a, i, e = s.area(), s.inertia(), mat.elastic_modulus
+    k = sqrt(i / a)
+    direct = _direct_step(p["P"], a)
+    sig = direct.value
+    crit = stress.euler_stress(e, p["L"], k)
+    pcr = stress.euler_load(e, i, p["L"])
+    steps = (direct,
+             Step("Radius of gyration", "k", "√({I} / {A})", (("I", i, "second_moment"), ("A", a, "area")), k, "length"),
+             Step("Critical column stress", "σcB", "π² {E} / ({L} / {k})²",
+                  (("E", e, "stress"), ("L", p["L"], "length"), ("k", k, "length")), crit, "stress"),
+             Step("Critical column load", "Pcr", "π² {E} {I} / {L}²",
+                  (("E", e, "stress"), ("I", i, "second_moment"), ("L", p["L"], "length")), pcr, "force"))
+    return Outcome("column_buckling", p["P"], sig, crit, stress.design_factor(crit, sig), steps)
+
+
+def _local(p, s, mat) -> Outcome:
+    t = p["t"] or s.wall
+    d, e = s.outside_diameter, mat.elastic_modulus
+    if "M" in p or "Mf" in p:
+        applied, steps = _combined_parts(p, s)
+    else:
+        steps = [_direct_step(p["P"], s.area())]
+        applied = steps[0].value
+    crit = stress.local_buckling_stress(e, t, d)
+    steps.append(Step("Local buckling stress", "σLB", "0.4 {E} {t} / {D}",
+                      (("E", e, "stress"), ("t", t, "length"), ("D", d, "length")), crit, "stress"))
+    return Outcome("local_buckling", p["P"], applied, crit, stress.design_factor(crit, applied), tuple(steps))
+
+
+def _bearing(p, s, mat) -> Outcome:
+    sig = stress.bearing_stress(p["P"], p["d"], p["t"])
+    fy = mat.yield_strength
+    steps = (Step("Bearing stress", "σBR", "{P} / ({d} {t})",
+                  (("P", p["P"], "force"), ("d", p["d"], "length"), ("t", p["t"], "length")), sig, "stress"),)
+    return Outcome("bearing", p["P"], sig, fy, stress.design_factor(fy, sig), steps)
+
+
+def _pin(p, s, mat) -> Outcome:
+    comps = p["components"]
+    load = stress.resultant(*comps)
+    names = tuple((f"P{j + 1}", v, "force") for j, v in enumerate(comps))
+    steps = (Step("Resultant pin load", "P", "√(" + " + ".join(f"{{{n}}}²" for n, _, _ in names) + ")",
+                  names, load, "force"),
+             Step("Double-shear allowable load", "Pallow", "{Pallow}", (("Pallow", p["allowable_load"], "force"),),
+                  p["allowable_load"], "force"))
+    return Outcome("shear", load, None, None, stress.design_factor(p["allowable_load"], load), steps)
+
+
+def _ring(p, s, mat) -> Outcome:
+    m = stress.ring_moment(p["P"], p["span"])
+    i, c = s.inertia(), s.c()
+    sig = stress.bending_stress(m, c, i)
+    fy = mat.yield_strength
+    steps = (Step("Ring moment", "M", "{P} {L} / 4", (("P", p["P"], "force"), ("L", p["span"], "length")), m, "moment"),
+             Step("Bending stress", "σB", "{M} {c} / {I}",
+                  (("M", m, "moment"), ("c", c, "length"), ("I", i, "second_moment")), sig, "stress"))
+    return Outcome("bending", p["P"], sig, fy, stress.design_factor(fy, sig), steps)
+
+
+def _cone(p, s, mat) -> Outcome:
+    a = stress.cone_strip_area(p["t"])
+    sig = stress.direct_stress(p["P"], a)
+    fy = mat.yield_strength
+    steps = (Step("Tensile stress on a 10t strip", "σT", "{P} / (10 {t}²)", (("P", p["P"], "force"), ("t", p["t"], "length")),
+                  sig, "stress"),)
+    return Outcome("tension", p["P"], sig, fy, stress.design_factor(fy, sig), steps)
+
+
+def _plate_geometry(p, s: Section) -> tuple[float, float]:
+    a = p.get("a") or s.dims["diameter"] / 2
+    t = p.get("t") or s.dims["thickness"]
+    return a, t
+
+
+def _shear_outcome(sr: float, st: float, load: float, mat: Material, steps: list[Step]) -> Outcome:
+    tau = stress.report_max_shear(sr, st)
+    allow = stress.shear_allowable(mat.yield_strength)
+    steps.append(Step("Maximum shear stress", "τmax", "({σr} + {σt}) / 2",
+                      (("σr", sr, "stress"), ("σt", st, "stress")), tau, "stress"))
+    steps.append(Step("Shear allowable", "τallow", "{Fcy} / 2", (("Fcy", mat.yield_strength, "stress"),), allow, "stress"))
+    return Outcome("plate_bending", load, tau, allow, stress.design_factor(allow, tau), tuple(steps))
+
+
+_FIXED = "3 {W} ({m}+1) / (2π {m} {t}²) [ln({a}/{r0}) + {r0}²/(4 {a}²)]"
+_SUPPORTED = "3 {W} / (2π {m} {t}²) [{m} + ({m}+1) ln({a}/{r0}) - ({m}-1) {r0}²/(4 {a}²)]"
+
+
+def _plate_common(p, s, mat, fn, label, ref, formula) -> Outcome:
+    a, t = _plate_geometry(p, s)
+    sr, st = fn(p["W"], t, a, p["r0"], mat.poisson_m)
+    steps = [Step(f"{label} ({ref})", "σr = σt", formula,
+                  (("W", p["W"], "force"), ("t", t, "length"), ("a", a, "length"), ("r0", p["r0"], "length"),
+                   ("m", mat.poisson_m, "dimensionless")), st, "stress")]
+    return _shear_outcome(sr, st, p["W"], mat, steps)
+
+
+def _plate_fixed(p, s, mat) -> Outcome:
+    return _plate_common(p, s, mat, plates.fixed_center_load, "Fixed edge, central load", "Roark 1954 p. 196", _FIXED)
+
+
+def _plate_supported(p, s, mat) -> Outcome:
+    return _plate_common(p, s, mat, plates.supported_center_load, "Supported edge, central load",
+                         "Roark 1954 p. 194-195", _SUPPORTED)
+
+
+def _plate_moment(p, s, mat) -> Outcome:
+    a, t = _plate_geometry(p, s)
+    m, mstep = _moment(p)
+    sm, _ = plates.fixed_center_moment(m, t, a, p["r0"], mat.poisson_m, p["pi_squared"])
+    sw, _ = plates.fixed_center_load(p["W"], t, a, p["r0"], mat.poisson_m)
+    steps = [mstep] if mstep else []
+    steps += [Step("Stress due to moment (Roark 1954 p. 197)", "σM",
+                   "3 {M} / (4 π" + ("²" if p["pi_squared"] else "") + " {t}² {r0}) [1 + (m+1)/m ln(2(0.45 {a} - {r0}) / (0.45 k {a}))]",
+                   (("M", m, "moment"), ("t", t, "length"), ("r0", p["r0"], "length"), ("a", a, "length")), sm, "stress"),
+              Step("Stress due to axial load (Roark 1954 p. 196)", "σW", _FIXED,
+                   (("W", p["W"], "force"), ("t", t, "length"), ("a", a, "length"), ("r0", p["r0"], "length"),
+                    ("m", mat.poisson_m, "dimensionless")), sw, "stress")]
+    total = sm + sw
+    return _shear_outcome(total, total, p["W"], mat, steps)
+
+
+def _plate_annular(p, s, mat) -> Outcome:
+    a = p["a"] or s.dims["diameter"] / 2
+    b = p["b"] or s.dims["inner_diameter"] / 2
+    t = p["t"] or s.dims["thickness"]
+    _, st = plates.annular_uniform_pressure(p["q"], t, a, b, mat.poisson_m)
+    fy = mat.yield_strength
+    steps = (Step("Tangential stress, annular plate, uniform pressure (Roark 1954 p. 199)", "σmax = σt",
+                  "3{q} / (4 m {t}² ({a}² - {b}²)) [4a⁴(m+1) ln(a/b) + 4a²b² + b⁴(m-1) - a⁴(m+3)]",
+                  (("q", p["q"], "stress"), ("t", t, "length"), ("a", a, "length"), ("b", b, "length")), st, "stress"),)
+    return Outcome("plate_bending", p["q"] * pi * (a * a - b * b), st, fy, stress.design_factor(fy, st), steps)
+
+
+def _plate_eccentric(p, s, mat) -> Outcome:
+    a, t = _plate_geometry(p, s)
+    sr, st = plates.supported_eccentric_and_distributed(p["W"], p["W_total"], t, a, p["p"], p["r0"],
+                                                         mat.poisson_m, p["a_t"])
+    ins = (("W", p["W"], "force"), ("W'", p["W_total"], "force"), ("t", t, "length"), ("a", a, "length"),
+           ("p", p["p"], "length"), ("r0", p["r0"], "length"))
+    ecc = "-3 {W} / (2π m {t}²) [m + (m+1) ln(({a}-{p})/{r0}) - (m-1) {r0}²/(4({a}-{p})²)]"
+    steps = [Step("Radial stress, eccentric + distributed load (Roark 1954 p. 194-195)", "σr",
+                  ecc + " + 3 {W'} / (8π m {t}²) (3m+1)(1 - {p}²/{a}²)", ins, sr, "stress"),
+             Step("Tangential stress, eccentric + distributed load (Roark 1954 p. 194-195)", "σt",
+                  ecc + " + 3 {W'} / (8π m {t}²) [(3m+1) - (m+3) {p}²/a²]", ins, st, "stress")]
+    return _shear_outcome(sr, st, p["W"], mat, steps)
+
+
+# kind -> (reader of config parameters, evaluator, material properties it needs)
+KINDS: dict[str, tuple[Callable[[Node], dict], Callable[[dict, Section, Material], Outcome], tuple[str, ...]]] = {
+    "compression": (_read_load, _compression, ("yield_strength",)),
+    "tension": (_read_load, _tension, ("yield_strength",)),
+    "bending": (_read_moment, _bending, ("yield_strength",)),
+    "combined": (_read_axial_and_moment, _combined, ("yield_strength",)),
+    "column_buckling": (_read_buckling, _column, ("elastic_modulus",)),
+    "local_buckling": (_read_local, _local, ("elastic_modulus",)),
+    "bearing": (_read_bearing, _bearing, ("yield_strength",)),
+    "pin_shear": (_read_pin, _pin, ()),
+    "ring_bending": (_read_ring, _ring, ("yield_strength",)),
+    "cone_tension": (_read_cone, _cone, ("yield_strength",)),
+    "plate_fixed_center_load": (_read_plate, _plate_fixed, ("yield_strength", "poisson_m")),
+    "plate_supported_center_load": (_read_plate, _plate_supported, ("yield_strength", "poisson_m")),
+    "plate_fixed_center_moment_and_load": (_read_plate_moment, _plate_moment, ("yield_strength", "poisson_m")),
+    "plate_annular_uniform_pressure": (_read_annular, _plate_annular, ("yield_strength", "poisson_m")),
+    "plate_supported_eccentric_and_distributed": (_read_eccentric, _plate_eccentric, ("yield_strength", "poisson_m")),
+}
+
+
+_PLATE = {"radius": "diameter", "thickness": "thickness"}
+# kind -> {config key: the section dimension its value replaces when given}
+STANDS_IN: dict[str, dict[str, str]] = {
+    "local_buckling": {"wall": "wall"},
+    "plate_fixed_center_load": _PLATE,
+    "plate_supported_center_load": _PLATE,
+    "plate_fixed_center_moment_and_load": _PLATE,
+    "plate_annular_uniform_pressure": {**_PLATE, "inner_radius": "inner_diameter"},
+    "plate_supported_eccentric_and_distributed": {**_PLATE, "radius_tangential": "diameter"},
+}
+
+
+def _length(x: float) -> str:
+    return f"{fmt(x, 'length', 'US')} ({fmt(x, 'length', 'SI')})"
+
+
+def out_of_range(check: Check, section: Section) -> tuple[str, str, str] | None:
+    """(key, expected, found) when a check's own geometry leaves its formula's domain: a local-buckling wall
+    of the tube's outside radius or more, a plate load circle or inner radius not below the plate radius."""
+    p = check.params
+    if check.kind == "local_buckling":
+        r = section.outside_diameter / 2           # the section's own wall is checked where it is read
+        if p["t"] is not None and p["t"] >= r:
+            return "wall", f"a wall below the tube's outside radius {_length(r)}", _length(p["t"])
+    elif check.kind.startswith("plate_"):
+        a, _ = _plate_geometry(p, section)
+        for key, name, words in (("load_radius", "r0", "a load radius"), ("inner_radius", "b", "an inner radius")):
+            if p.get(name) is not None and p[name] >= a:
+                return key, f"{words} below the plate radius {_length(a)}", _length(p[name])
+    return None
+
+
+def read_check(node: Node) -> Check:
+    kind = node.string("kind", choices=tuple(KINDS))
+    params = KINDS[kind][0](node)
+    note = node.string("note", "")
+    node.finish()
+    replaces = {key: dim for key, dim in STANDS_IN.get(kind, {}).items() if node.has(key)}
+    return Check(kind, params, node.path, note, replaces)
+

@@ -1,0 +1,183 @@
+"""Reading TOML configs: typed access by key path, quantities parsed to SI, unknown keys rejected."""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+import tomllib
+from pathlib import Path
+from typing import Any
+
+from alightsize.common import units
+from alightsize.common.errors import InputError, warn_input
+
+_MISSING = object()
+_INDEXED = re.compile(r"(\w+)\[(\d+)\]")
+
+
+def _describe(value: Any) -> str:
+    if isinstance(value, dict):
+        return "a table"
+    if isinstance(value, list):
+        return "an array"
+    return f"{type(value).__name__} {value!r}"
+
+
+class Node:
+    """A TOML table being read: every key read is recorded so `finish` can reject unknown keys."""
+
+    def __init__(self, file: str | Path, path: str, data: dict, context: dict | None = None):
+        self.file, self.path, self.data = str(file), path, data
+        self.context = {} if context is None else context     # shared by the whole tree (hooks, records)
+        self._read: set[str] = set()
+
+    def key(self, name: str) -> str:
+        return f"{self.path}.{name}" if self.path else name
+
+    def set_path(self, dotted: str, value: Any) -> None:
+        """Set the value at a dotted key path below this table (creating tables on the way); a last key
+        with an index, `initial.velocity[2]`, sets that element of an existing array."""
+        *tables, last = dotted.split(".")
+        data = self.data
+        for k, name in enumerate(tables):
+            data = data.setdefault(name, {})
+            if not isinstance(data, dict):
+                raise self.error(".".join(tables[:k + 1]), "a table to set " + dotted + " in", _describe(data))
+        m = _INDEXED.fullmatch(last)
+        if m is None:
+            data[last] = value
+            return
+        name, index = m.group(1), int(m.group(2))
+        array = data.get(name)
+        if not isinstance(array, list) or index >= len(array):
+            where = ".".join(tables + [name])
+            raise self.error(where, f"an array with an element [{index}] to set", _describe(array))
+        data[name] = array[:index] + [value] + array[index + 1:]
+
+    def error(self, name: str, expected: str, found: str) -> InputError:
+        return InputError(self.file, self.key(name), expected, found)
+
+    def warn(self, name: str, message: str) -> None:
+        """Warn about a legal but suspicious value at key `name` (an InputWarning naming file and key path)."""
+        warn_input(self.file, self.key(name), message)
+
+    def has(self, name: str) -> bool:
+        return name in self.data
+
+    def raw(self, name: str, default: Any = _MISSING) -> Any:
+        self._read.add(name)
+        if name not in self.data:
+            if default is _MISSING:
+                raise self.error(name, "this key to be present", "nothing")
+            return default
+        return self.data[name]
+
+    def quantity(self, name: str, dim: str, default: Any = _MISSING, positive: bool = True) -> float:
+        """A quantity with units, returned in SI (angles in radians)."""
+        value = self.raw(name, default)
+        if value is default and default is not _MISSING:
+            return default
+        return self.parse_quantity(name, value, dim, positive)
+
+    def parse_quantity(self, name: str, value: Any, dim: str, positive: bool = True) -> float:
+        if isinstance(value, dict) and dim == "force" and "force_reference" in self.context:
+            return self.context["force_reference"](self, name, value)
+        try:
+            si = units.parse(value, dim)
+        except ValueError as exc:
+            raise self.error(name, str(exc), _describe(value)) from None
+        if positive and si <= 0:
+            raise self.error(name, f"a positive {dim}", _describe(value))
+        return si
+
+    def number(self, name: str, default: Any = _MISSING, positive: bool = True) -> float:
+        value = self.raw(name, default)
+        if value is default and default is not _MISSING:
+            return default
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise self.error(name, "a number", _describe(value))
+        if not math.isfinite(value) or (positive and value <= 0):
+            raise self.error(name, "a finite positive number" if positive else "a finite number", _describe(value))
+        return float(value)
+
+    def integer(self, name: str, default: Any = _MISSING, minimum: int = 1) -> int:
+        value = self.raw(name, default)
+        if value is default and default is not _MISSING:
+            return default
+        if isinstance(value, bool) or not isinstance(value, int) or value < minimum:
+            raise self.error(name, f"an integer >= {minimum}", _describe(value))
+        return value
+
+    def string(self, name: str, default: Any = _MISSING, choices: tuple[str, ...] | None = None) -> str:
+        value = self.raw(name, default)
+        if value is default and default is not _MISSING:
+            return default
+        if not isinstance(value, str):
+            raise self.error(name, "a string", _describe(value))
+        if choices is not None and value not in choices:
+            raise self.error(name, "one of " + ", ".join(repr(c) for c in choices), repr(value))
+        return value
+
+    def boolean(self, name: str, default: Any = _MISSING) -> bool:
+        value = self.raw(name, default)
+        if not isinstance(value, bool):
+            raise self.error(name, "true or false", _describe(value))
+        return value
+
+    def table(self, name: str, optional: bool = False) -> Node | None:
+        value = self.raw(name, None if optional else _MISSING)
+        if value is None:
+            return None
+        if not isinstance(value, dict):
+            raise self.error(name, "a table", _describe(value))
+        return Node(self.file, self.key(name), value, self.context)
+
+    def tables(self, name: str, optional: bool = False, label: str | None = None) -> list[Node]:
+        """An array of tables. With `label`, an element whose string under that key is unique in the array is
+        named by it in key paths, `item["Upper Truss"]`, the others by index, `item[0]`."""
+        value = self.raw(name, [] if optional else _MISSING)
+        if not isinstance(value, list) or not all(isinstance(v, dict) for v in value):
+            raise self.error(name, "an array of tables", _describe(value))
+        labels = [v.get(label) for v in value] if label else []
+
+        def element(i: int) -> str:
+            text = labels[i] if labels else None
+            return json.dumps(text, ensure_ascii=False) if isinstance(text, str) and labels.count(text) == 1 else str(i)
+        return [Node(self.file, f"{self.key(name)}[{element(i)}]", v, self.context) for i, v in enumerate(value)]
+
+    def strings(self, name: str, default: Any = _MISSING) -> list[str]:
+        value = self.raw(name, default)
+        if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
+            raise self.error(name, "an array of strings", _describe(value))
+        return list(value)
+
+    def allow(self, names) -> None:
+        """Reject keys outside `names` before reading, so a typo is reported rather than a missing key."""
+        unknown = sorted(set(self.data) - set(names))
+        if unknown:
+            raise self.error(unknown[0], "one of the known keys (" + ", ".join(sorted(names)) + ")",
+                             f"unknown key {unknown[0]!r}")
+
+    def finish(self) -> None:
+        """Reject keys nobody read: a typo must never pass silently."""
+        unknown = sorted(set(self.data) - self._read)
+        if unknown:
+            known = ", ".join(sorted(self._read)) or "no keys"
+            raise self.error(unknown[0], f"one of the known keys ({known})", f"unknown key {unknown[0]!r}")
+
+
+def load_toml(path: str | Path) -> Node:
+    """Read a TOML file into a root Node; a missing or malformed file is an InputError."""
+    path = Path(path)
+    try:
+        text = path.read_bytes().decode("utf-8")
+    except FileNotFoundError:
+        raise InputError(str(path), "", "an existing TOML file", "no such file") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise InputError(str(path), "", "a readable UTF-8 TOML file", str(exc)) from None
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(str(path), "", "valid TOML", f"a syntax error: {exc}") from None
+    return Node(path, "", data)

@@ -1,0 +1,361 @@
+"""Speed against error of the landing simulator (`alightsize bench`): each scene with each method over a
+ladder of tolerances or steps, errors against a tight-tolerance reference, and the same equations under
+scipy.integrate (RK45, DOP853 stepped one accepted step at a time, memory committed between steps, events
+located on their dense output) as the baseline a user would write. JSON, HTML and a work-precision plot."""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import os
+import platform
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+from scipy import integrate, optimize
+
+from alightsize_sim import landing_kernel as lk
+from alightsize_sim.articulated_leg import ArticulatedLeg
+from alightsize_sim.landing import Controls, Result, _Run, accel_g, initial_state, simulate
+
+from alightsize.common.atomic import write_atomic
+from alightsize.common.resources import data_dir
+from alightsize.model.scene_config import SceneConfig, read_scene
+
+EXAMPLES = data_dir("examples") / "affdl-tr-66-33" / "scenes"
+TARGET_ERROR = 1e-3   # the accuracy every method is timed at: 0.1 % in peak XDD(3)
+
+
+REFERENCE = dict(rtol=1e-11, atol=1e-14, max_step=5e-4, event_tol=1e-9)
+# Slipping articulated footpads slide from where they were at the last accepted step, so the path depends on
+# the step size to first order (docs/simulator.md): there the rtol 1e-11 run is 6e-4 off the finest fixed-step
+# runs in peak XDD(3), and fixed steps of 2.5e-6 s differ from 5e-6 s by 1.4e-4.
+FINE_STEP = dict(fixed_step=2.5e-6, event_tol=1e-9)
+
+
+def _scenes(quick: bool) -> list[tuple[SceneConfig, float | None, dict]]:
+    """(scene, simulated time, reference controls): the flat drop, configuration 2 flat and configuration 1
+    slipping into a 20 deg slope (run 12101), run for fixed times with the early stops off so every method
+    covers the same span (the impact, the hardest part); configuration 2 as a whole landing and the articulated
+    configuration 5 slipping down a 35 deg slope (the hardest speed case), each to its outcome (None: the
+    scene's own stops; the scipy baselines cover the reference's span). The articulated landing tips at about
+    0.25 s; with the tip stop off it would go on with a leg lying flat, where one slide runs to the edge of the
+    leg's reach in a step and its force spikes (docs/simulator.md). Quick: the flat drop, configuration 2 and
+    the articulated case."""
+    cfg2 = read_scene(EXAMPLES / "telescoping_config2.toml")
+    flat = (read_scene(EXAMPLES / "flat_drop.toml"), 0.12, REFERENCE)
+    config2 = (cfg2, 0.3, REFERENCE)
+    cfg5 = read_scene(EXAMPLES / "articulated_config5_slope35.toml")
+    articulated = (dataclasses.replace(cfg5, name=f"{cfg5.name} (whole landing)"), None, FINE_STEP)
+    if quick:
+        return [flat, config2, articulated]
+    return [flat, config2, (read_scene(EXAMPLES / "telescoping_config1_run12101.toml"), 0.3, REFERENCE), articulated,
+            (dataclasses.replace(cfg2, name="telescoping_config2 (whole landing)"), None, REFERENCE)]
+
+
+def _controls(cfg: SceneConfig, t_sim: float | None, **kw) -> Controls:
+    if t_sim is None:
+        return dataclasses.replace(cfg.controls, **kw)
+    return dataclasses.replace(cfg.controls, t_final=t_sim, energy_check_from=None, taus=0.0, tip_angle=np.pi,
+                               stop_on_bottoming=False, **kw)
+
+
+def _metrics(res: Result) -> dict:
+    return {"peak": float(np.max(np.abs(res.accel_g[:, 2]))), "stroke": float(np.max(res.memory[:, :, 0])),
+            "final": res.y[-1, :13].copy(), "t_end": float(res.t[-1])}
+
+
+def _errors(m: dict, ref: dict) -> dict:
+    scale = np.maximum(np.abs(ref["final"]), 1.0)
+    return {"err_peak_xdd3_rel": abs(m["peak"] - ref["peak"]) / ref["peak"],
+            "err_max_stroke_rel": abs(m["stroke"] - ref["stroke"]) / max(ref["stroke"], 1e-12),
+            "err_final_state_rel": float(np.max(np.abs(m["final"] - ref["final"]) / scale))}
+
+
+def _coarser(ref_kw: dict) -> dict:
+    """The reference's own check: twice its fixed step, or ten times its tolerances. Their difference in peak
+    XDD(3) bounds how far the reference itself may be from the converged landing (a smaller error is not
+    resolved)."""
+    if ref_kw.get("fixed_step"):
+        return {**ref_kw, "fixed_step": 2.0 * ref_kw["fixed_step"]}
+    return {**ref_kw, "rtol": 10.0 * ref_kw["rtol"], "atol": 10.0 * ref_kw["atol"]}
+
+
+def _timed(fn, repeats: int) -> tuple[dict, object]:
+    """One untimed warm-up call (first-call dispatch, caches), then `repeats` timed calls: their median, least
+    and largest wall time in s, and the last call's result."""
+    out = fn()
+    walls = []
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        out = fn()
+        walls.append(time.perf_counter() - t0)
+    return {"wall_s": float(np.median(walls)), "wall_min_s": min(walls), "wall_max_s": max(walls),
+            "repeats": repeats}, out
+
+
+def scipy_landing(cfg: SceneConfig, ctl: Controls, method: str) -> tuple[dict, int, int]:
+    """The same equations (the compiled right-hand side, cell memory, slip and switching functions of the
+    simulator) stepped by scipy's OdeSolver: memory committed after each accepted step, touchdown and
+    lift-off and stick-to-slip located with brentq on the solver's dense output, the solver restarted after a
+    switch."""
+    s = cfg.scene
+    run = _Run(s, ctl)
+    y = initial_state(s, run)
+    n = run.n
+    work, g_prev, g = run.work, np.empty(2 * n), np.empty(2 * n)
+    nfev = steps = 0
+    peak, t = 0.0, 0.0
+
+    def f(_t, yy):
+        dy = np.zeros(14)
+        lk.rhs(run.geo, run.cells, s.mass, s.inertia, s.gravity, run.mu, run.mem, run.contact, run.P, run.sliding,
+               run.shape, yy, dy, *work)
+        return dy
+
+    def events(yy, out):
+        f(0.0, yy)
+        return _events(yy, out)
+
+    def _events(yy, out):
+        """Event values at yy from the leg state the last evaluation of f left in `work`."""
+        lk._events(run.cells, run.geo, run.mu, run.mem, run.contact, run.sliding, run.shape, run.armed, yy, work[2],
+                   work[5], out, False)
+        return out
+
+    def accept(tt, yy, which):
+        """Commit memory at an accepted state (event `which` if >= 0: a contact switch below n, a slide from
+        n on, which the commit starts); the peak acceleration there."""
+        dy = f(tt, yy)
+        started = lk._commit(run.geo, run.cells, run.mu, run.mem, run.contact, run.P, run.sliding, run.shape,
+                             run.armed, yy, run.energy, run.last, work, g)
+        if 0 <= which < n:
+            lk.switch(run.geo, run.cells, run.mem, run.contact, run.P, run.sliding, run.shape, run.armed, yy, which,
+                      run.last, work)
+        if which >= 0 or started:
+            dy = f(tt, yy)
+        _events(yy, g_prev)
+        return abs(float(accel_g(yy, dy, s.gravity)[0, 2]))
+
+    Solver = {"RK45": integrate.RK45, "DOP853": integrate.DOP853}[method]
+    events(y, g_prev)
+    while t < ctl.t_final - 1e-12:
+        solver = Solver(f, t, y, ctl.t_final, rtol=ctl.rtol, atol=ctl.atol, max_step=ctl.max_step)
+        while solver.status == "running":
+            solver.step()
+            steps += 1
+            y1 = solver.y.copy()
+            crossed = (g_prev > 0) & (events(y1, g) <= 0)
+            which = int(np.argmax(crossed)) if crossed.any() else -1
+            t1 = solver.t
+            if which >= 0:
+                dense = solver.dense_output()
+                t1 = solver.t_old                     # re-evaluated there, the function may already be past zero
+                if events(dense(t1), g.copy())[which] > 0:
+                    t1 = optimize.brentq(lambda tt: events(dense(tt), g.copy())[which], solver.t_old, solver.t,
+                                         xtol=ctl.event_tol)
+                if events(dense(t1), g.copy())[which] > 0:   # take the side past the crossing
+                    t1 = min(t1 + ctl.event_tol, solver.t)
+                y1 = dense(t1)
+            y1[6:10] /= np.linalg.norm(y1[6:10])
+            peak = max(peak, accept(t1, y1, which))
+            t, y = t1, y1
+            if which >= 0:
+                break                                  # restart the solver after the switch
+        nfev += solver.nfev
+        if solver.status == "failed":
+            break
+    return {"peak": peak, "stroke": float(np.max(run.mem[:, :, 0])), "final": y[:13].copy(), "t_end": t}, nfev, steps
+
+
+def python_baseline(scene_path: str, t_sim: float, method: str, rtol: float, repeats: int) -> dict:
+    """scipy_landing timed in this process; run under NUMBA_DISABLE_JIT=1 it is the plain-numpy baseline (the
+    equations as interpreted Python/numpy, no compilation)."""
+    cfg = read_scene(scene_path)
+    ctl = _controls(cfg, t_sim, rtol=rtol, atol=rtol * 1e-3)
+    wall, (m, nfev, steps) = _timed(lambda: scipy_landing(cfg, ctl, method), repeats)
+    return {**wall, "nfev": nfev, "steps": steps, "peak": m["peak"], "stroke": m["stroke"],
+            "final": m["final"].tolist(), "t_end": m["t_end"]}
+
+
+def _uncompiled(cfg: SceneConfig, t_sim: float, method: str, rtol: float, repeats: int) -> dict:
+    """python_baseline in a subprocess with numba's JIT disabled."""
+    code = ("import json, sys; from alightsize.landings.bench import python_baseline; "
+            f"print(json.dumps(python_baseline({str(cfg.path)!r}, {t_sim!r}, {method!r}, {rtol!r}, {repeats!r})))")
+    out = subprocess.run([sys.executable, "-c", code], env={**os.environ, "NUMBA_DISABLE_JIT": "1"},
+                         capture_output=True, text=True, check=True)
+    r = json.loads(out.stdout.strip().splitlines()[-1])
+    r["final"] = np.array(r["final"])
+    return r
+
+
+def _targets(cases: list[dict]) -> list[dict]:
+    """Per scene: the fastest case of each kind at or below TARGET_ERROR in peak XDD(3), in ms per simulated
+    second (median of the repeats), and the speed-ups of the compiled simulator over the baselines."""
+    out = []
+    for scene in sorted({c["scene"] for c in cases}):
+        best = {}
+        for c in cases:
+            if c["scene"] == scene and c["err_peak_xdd3_rel"] <= TARGET_ERROR:
+                kind = "ours" if c["compiled"] else c["method"]
+                ms = 1e3 * c["wall_s"] / c["t_sim_s"]
+                if kind not in best or ms < best[kind]["ms_per_simulated_s"]:
+                    best[kind] = {"method": c["method"], "setting": c["setting"], "ms_per_simulated_s": ms,
+                                  "err_peak_xdd3_rel": c["err_peak_xdd3_rel"]}
+        row = {"scene": scene, "best": best}
+        if "ours" in best:
+            row["speedup"] = {k: v["ms_per_simulated_s"] / best["ours"]["ms_per_simulated_s"]
+                              for k, v in best.items() if k != "ours"}
+        out.append(row)
+    return out
+
+
+def _said(case: dict) -> str:
+    """A case's median wall time with its spread over the repeats, and its error."""
+    return (f"{case['wall_s'] * 1e3:.1f} ms ({case['wall_min_s'] * 1e3:.1f}-{case['wall_max_s'] * 1e3:.1f} over "
+            f"{case['repeats']}), peak XDD(3) error {case['err_peak_xdd3_rel']:.1e}")
+
+
+def run_bench(quick: bool = False, progress=print) -> dict:
+    ladder = [1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7] if not quick else [1e-3, 1e-5, 1e-7]
+    fixed = [4e-4, 2e-4, 1e-4, 5e-5] if not quick else [1e-4]
+    scipy_ladder = [1e-3, 1e-5, 1e-7] if not quick else [1e-4]
+    repeats = 5 if not quick else 3                                 # every case, compiled or not, alike
+    t0 = time.perf_counter()
+    scenes = _scenes(quick)
+    cfg0 = scenes[0][0]
+    simulate(cfg0.scene, _controls(cfg0, 0.01))                      # load the compiled code
+    compile_s = time.perf_counter() - t0
+    cases, references, uncertainty, goal = [], {}, {}, {}
+    for cfg, t_sim, ref_kw in scenes:
+        ref = _metrics(simulate(cfg.scene, _controls(cfg, t_sim, **ref_kw)))
+        references[cfg.name] = ref_kw
+        # the speed targets in ms per simulated second: 20 for a telescoping landing, 50 for an articulated one
+        goal[cfg.name] = 50.0 if any(isinstance(leg, ArticulatedLeg) for leg in cfg.scene.legs) else 20.0
+        check = _metrics(simulate(cfg.scene, _controls(cfg, t_sim, **_coarser(ref_kw))))
+        uncertainty[cfg.name] = _errors(check, ref)
+        span = t_sim or ref["t_end"]
+        progress(f"{cfg.name}: reference done ({span:.3f} s; peak XDD(3) within "
+                 f"{uncertainty[cfg.name]['err_peak_xdd3_rel']:.1e} of its check)")
+        runs = [("dopri5", f"rtol={r:g}", dict(rtol=r, atol=r * 1e-3)) for r in ladder]
+        runs += [("dopri5-fixed", f"h={h:g}", dict(fixed_step=h)) for h in fixed]
+        for method, setting, kw in runs:
+            ctl = _controls(cfg, t_sim, **kw)
+            wall, res = _timed(lambda: simulate(cfg.scene, ctl), repeats)
+            cases.append({"scene": cfg.name, "method": method, "setting": setting, "t_sim_s": float(res.t[-1]),
+                          **wall, "rhs_evals": res.rhs_evals, "steps": res.steps, **_errors(_metrics(res), ref),
+                          "compiled": True})
+            progress(f"  {method} {setting}: {_said(cases[-1])}")
+        for method in ("RK45", "DOP853"):
+            for r in scipy_ladder:
+                ctl = _controls(cfg, span, rtol=r, atol=r * 1e-3)
+                wall, (m, nfev, steps) = _timed(lambda: scipy_landing(cfg, ctl, method), repeats)
+                cases.append({"scene": cfg.name, "method": f"scipy-{method}", "setting": f"rtol={r:g}", "t_sim_s": span,
+                              **wall, "rhs_evals": nfev, "steps": steps, **_errors(m, ref), "compiled": False})
+                progress(f"  scipy-{method} rtol={r:g}: {_said(cases[-1])}")
+        for r in ([1e-3, 1e-5] if not quick else []):
+            b = _uncompiled(cfg, span, "RK45", r, repeats)
+            cases.append({"scene": cfg.name, "method": "scipy-RK45-uncompiled", "setting": f"rtol={r:g}",
+                          "t_sim_s": span, **{k: b[k] for k in ("wall_s", "wall_min_s", "wall_max_s", "repeats")},
+                          "rhs_evals": b["nfev"], "steps": b["steps"], **_errors(b, ref), "compiled": False})
+            progress(f"  scipy-RK45 plain numpy rtol={r:g}: {_said(cases[-1])}")
+    import numba
+    return {"schema": "alightsize.bench/1",
+            "machine": {"cores": os.cpu_count(), "python": platform.python_version(), "numpy": np.__version__,
+                        "numba": numba.__version__, "processor": platform.processor() or platform.machine()},
+            "compile_or_cache_load_s": compile_s, "references": references,
+            "reference_uncertainty": uncertainty, "target_error": TARGET_ERROR,
+            "target_ms_per_simulated_s": goal, "cases": cases,
+            "targets": _targets(cases)}
+
+
+def _setting_text(kw: dict) -> str:
+    """Solver controls as words: 'rtol 1e-11, atol 1e-14, max_step 0.0005, event_tol 1e-09'."""
+    return ", ".join(f"{k} {v:g}" for k, v in kw.items())
+
+
+def _html(data: dict) -> str:
+    from jinja2 import Environment, select_autoescape
+    env = Environment(autoescape=select_autoescape(default=True))
+    env.filters["setting"] = _setting_text
+    return env.from_string("""<!doctype html><meta charset="utf-8"><title>alightsize bench</title>
+<style>body{font-family:sans-serif;max-width:75em;margin:1em auto;padding:0 1em} img{max-width:100%;height:auto}
+table{border-collapse:collapse;font-size:90%} td,th{border:1px solid #bbb;padding:2px 6px} td.num{text-align:right}</style>
+<h1>Landing simulator: speed against error</h1>
+<p>{{ m.cores }} cores, Python {{ m.python }}, numpy {{ m.numpy }}, numba {{ m.numba }}. Compiled code loaded in
+{{ '%.2f' % d.compile_or_cache_load_s }} s (excluded below). Every case, compiled or not, is run once untimed and then
+timed {{ d.cases[0].repeats }} times: wall is the median, with the least and largest in brackets. Errors are against
+a reference run of the same scene:</p>
+<ul>{% for name, ref in d.references.items() %}<li>{{ name }}: {{ ref | setting }}; its own uncertainty
+{{ '%.1e' % d.reference_uncertainty[name].err_peak_xdd3_rel }}</li>{% endfor %}</ul>
+<p>The reference's uncertainty is its difference in peak XDD(3) from the same run at twice its fixed step or ten
+times its tolerances: errors below it are not resolved.</p>
+<h2>Fastest at or below {{ '%g' % (100 * d.target_error) }} % peak-XDD(3) error</h2>
+<table><tr><th>scene<th>fastest<th>setting<th>ms per simulated s<th>target ms
+<th>error<th>reference uncertainty<th>compiled simulator's speed-up over it</tr>
+{% for t in d.targets %}{% for kind, b in t.best.items() %}<tr><td>{{ t.scene }}<td>{{ b.method }}<td>{{ b.setting }}
+<td class=num>{{ '%.1f' % b.ms_per_simulated_s }}<td class=num>{{ '%.0f' % d.target_ms_per_simulated_s[t.scene] }}
+<td class=num>{{ '%.1e' % b.err_peak_xdd3_rel }}<td class=num>{{ '%.1e' % d.reference_uncertainty[t.scene].err_peak_xdd3_rel }}
+<td class=num>{{ '%.1fx' % t.speedup[kind] if t.speedup and kind in t.speedup else '' }}</tr>{% else %}<tr><td>{{ t.scene }}
+<td colspan=7>no setting at or below {{ '%g' % (100 * d.target_error) }} % (reference uncertainty
+{{ '%.1e' % d.reference_uncertainty[t.scene].err_peak_xdd3_rel }})</tr>
+{% endfor %}{% endfor %}</table>
+<p><img src="work_precision.png" alt="wall time per simulated second against error, per scene and method"></p>
+<h2>Every case</h2>
+<table><tr><th>scene<th>method<th>setting<th>simulated s<th>wall ms (least-largest)
+<th>ms per simulated s<th>rhs evals<th>steps<th>peak XDD(3) err<th>max stroke err<th>final state err</tr>
+{% for c in d.cases %}<tr><td>{{ c.scene }}<td>{{ c.method }}<td>{{ c.setting }}<td class=num>{{ '%.3f' % c.t_sim_s }}
+<td class=num>{{ '%.2f' % (c.wall_s * 1000) }} ({{ '%.2f' % (c.wall_min_s * 1000) }}-{{ '%.2f' % (c.wall_max_s * 1000) }})
+<td class=num>{{ '%.1f' % (c.wall_s * 1000 / c.t_sim_s) }}<td class=num>{{ '{:,}'.format(c.rhs_evals) }}
+<td class=num>{{ '{:,}'.format(c.steps) }}<td class=num>{{ '%.1e' % c.err_peak_xdd3_rel }}
+<td class=num>{{ '%.1e' % c.err_max_stroke_rel }}<td class=num>{{ '%.1e' % c.err_final_state_rel }}</tr>
+{% endfor %}</table>""").render(d=data, m=data["machine"])
+
+
+def _plot(data: dict, path: Path) -> None:
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    scenes = list(data["references"])
+    methods = sorted({c["method"] for c in data["cases"]})
+    ncol = min(3, len(scenes))
+    nrow = -(-len(scenes) // ncol)
+    fig, axes = plt.subplots(nrow, ncol, figsize=(4.2 * ncol, 3.4 * nrow + 0.8), squeeze=False, layout="constrained")
+    for ax in axes.flat[len(scenes):]:
+        ax.set_axis_off()
+    for ax, scene in zip(axes.flat, scenes):
+        for k, method in enumerate(methods):
+            pts = [(c["err_peak_xdd3_rel"], c["wall_s"] * 1000 / c["t_sim_s"]) for c in data["cases"]
+                   if c["scene"] == scene and c["method"] == method]
+            if pts:
+                e, w = zip(*pts)
+                ax.loglog(np.maximum(e, 1e-16), w, "o-", color=f"C{k}", label=method)
+        ax.axvline(data["target_error"], color="grey", lw=0.8, ls=":")
+        lo, hi = ax.get_xlim()
+        unc = data["reference_uncertainty"][scene]["err_peak_xdd3_rel"]
+        if unc > lo:
+            ax.axvspan(lo, unc, color="grey", alpha=0.15, lw=0, label="below the reference's uncertainty")
+            ax.set_xlim(lo, hi)
+        ax.axhline(data["target_ms_per_simulated_s"][scene], color="grey", lw=0.8, ls=":")
+        ax.set_title(scene, fontsize=9)
+        ax.set_xlabel("relative error in peak XDD(3)")
+        ax.set_ylabel("wall ms per simulated second")
+        ax.grid(alpha=0.3, which="both")
+    handles = {}
+    for ax in axes.flat:
+        for h, label in zip(*ax.get_legend_handles_labels()):
+            handles.setdefault(label, h)
+    fig.legend(handles.values(), handles.keys(), loc="outside lower center", ncol=min(4, len(handles)), fontsize=8)
+    write_atomic(path, lambda tmp: fig.savefig(tmp, format="png", dpi=100, metadata={"Software": None}))
+    plt.close(fig)
+
+
+def write_bench(data: dict, out: Path) -> list[Path]:
+    out.mkdir(parents=True, exist_ok=True)
+    files = [write_atomic(out / "bench.json", json.dumps(data, indent=2) + "\n")]
+    _plot(data, out / "work_precision.png")
+    files += [out / "work_precision.png", write_atomic(out / "bench.html", _html(data))]
+    return files

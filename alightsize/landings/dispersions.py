@@ -1,0 +1,88 @@
+"""Monte Carlo dispersions of scene values: normal, uniform and truncated normal, in the unit the user wrote.
+
+A dispersion is read from a study's `[dispersions]` table, e.g.
+`"terrain.slope" = { dist = "normal", mean = "10 deg", sd = "1 deg" }`; `per_cell = true` on
+`legs.cell_factors` draws one factor per cell of every leg (the per-cell scatter of Sec. VI.C). Sample k of a
+study draws from `numpy.random.default_rng([seed, k])` in the declared order, so a run depends only on
+(seed, k), never on the order or place it executes.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.special import ndtr, ndtri
+
+from alightsize.common.config import Node
+from alightsize.common.units import registry
+
+DISTRIBUTIONS = {"normal": ("mean", "sd"), "uniform": ("low", "high"),
+                 "truncated_normal": ("mean", "sd", "low", "high")}
+
+
+@dataclass(frozen=True)
+class Dispersion:
+    key: str                    # scene key path
+    dist: str
+    params: tuple[float, ...]   # in `unit`
+    unit: str                   # "" for plain numbers
+    per_cell: bool
+
+    def draw(self, rng: np.random.Generator, shape: tuple[int, ...] = ()) -> np.ndarray:
+        """Draws in `unit`; a truncated normal by inverting its CDF (exact, one uniform per draw)."""
+        if self.dist == "normal":
+            return rng.normal(self.params[0], self.params[1], shape)
+        if self.dist == "uniform":
+            return rng.uniform(self.params[0], self.params[1], shape)
+        mean, sd, low, high = self.params
+        a, b = ndtr((low - mean) / sd), ndtr((high - mean) / sd)
+        return np.clip(mean + sd * ndtri(a + (b - a) * rng.uniform(0.0, 1.0, shape)), low, high)
+
+    def value(self, rng: np.random.Generator, cells: tuple[int, int] | None = None):
+        """One sample as a scene value: "x unit" (x a float), a number, or per-cell nested lists."""
+        if self.per_cell:
+            return [[float(x) for x in row] for row in self.draw(rng, cells)]
+        x = float(self.draw(rng))
+        return f"{x!r} {self.unit}" if self.unit else x
+
+
+def _number(node: Node, key: str, value, unit: str | None) -> tuple[float, str]:
+    """A distribution parameter as (magnitude, unit); later parameters are converted to the first's unit."""
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        if unit:
+            raise node.error(key, f"a quantity in {unit} like the first parameter", repr(value))
+        return float(value), ""
+    try:
+        q = registry().Quantity(str(value))
+        q = q.to(unit) if unit else q
+    except Exception:                                  # noqa: BLE001 - pint raises many kinds
+        raise node.error(key, "a number or a quantity with a unit" + (f" convertible to {unit}" if unit else ""),
+                         repr(value)) from None
+    mag = float(q.magnitude)
+    if not np.isfinite(mag):
+        raise node.error(key, "a finite value", repr(value))
+    return mag, unit if unit is not None else ("" if str(q.units) == "dimensionless" else str(q.units))
+
+
+def read_dispersion(node: Node, key: str) -> Dispersion:
+    """One `[dispersions]` entry; errors name the key path."""
+    spec = node.table(key)
+    dist = spec.string("dist", choices=tuple(DISTRIBUTIONS))
+    names = DISTRIBUTIONS[dist]
+    spec.allow(("dist", "per_cell", "note") + names)
+    unit, values = None, []
+    for name in names:
+        mag, unit = _number(spec, name, spec.raw(name), unit)
+        values.append(mag)
+    per_cell = spec.boolean("per_cell", False)
+    spec.string("note", "")
+    spec.finish()
+    if dist != "uniform" and values[1] <= 0:
+        raise spec.error("sd", "a positive standard deviation", repr(spec.raw("sd")))
+    lo_hi = values[-2:] if dist != "normal" else None
+    if lo_hi and not lo_hi[0] < lo_hi[1]:
+        raise spec.error("high", f"a bound above low ({lo_hi[0]:g})", f"{lo_hi[1]:g}")
+    if per_cell and (key != "legs.cell_factors" or unit):
+        raise spec.error("per_cell", "per_cell only on legs.cell_factors with plain-number factors", "true")
+    return Dispersion(key, dist, tuple(values), unit or "", per_cell)

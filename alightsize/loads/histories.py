@@ -1,0 +1,150 @@
+"""Member loads along simulated landing histories: dynamic load envelopes (AFFDL-TR-66-33 App. III on Sec. V.F).
+
+The quasi-static envelopes (`load_envelopes`) put both cells of the articulated leg at the force their
+loading curves give at the deflection each (alpha, psi) implies, i.e. on their crushing plateau (the
+return spring added to AF2; positions past a cell's bottoming point left out), derive the ground force
+from those cell forces (eq. 59-61) and sweep a grid of (alpha, beta, psi). Here the same member-load
+functions (`articulated_statics.reactions`, eq. 53-61 and 98-100, then `member_loads`, eq. 101-106) are
+evaluated at every accepted step of a simulated landing, for every articulated leg on the ground.
+
+Taken from the history (`alightsize_sim.landing.Result`): the capsule state y, the contact flags, the footpad
+positions, the upper cell force AF1 (`forces[..., 0]`: the loading curve while the cell crushes, the
+unloading spring and damper below its maximum), the lower cell force (`forces[..., 1]`, likewise) and the
+ground force (`leg_force`, turned into the leg's S axes as L^T X). Recomputed: the leg's shape
+(alpha, beta, psi), which the Result does not keep, by the simulator's own `alightsize_sim.legs.leg_force` from the
+stored footpad and state, the root seeded with the previous step's shape as the step loop seeds it (the
+cells' memory enters only the forces, which are discarded); the recovered shape must reproduce the
+history's cell deflections. The leg is massless, so wherever the peg leg is off its seat the history's
+ground force is eq. 59-61 of the history's cell forces (AF2 = lower cell + return spring) to round-off.
+On the seat (alpha < `alightsize_sim.articulated_leg.SEAT`) the simulator blends toward FORCE's vertical force from
+the upper cell alone; there the lower-cell line force AF2 used is the one that, with the history's AF1,
+gives exactly the simulated ground force (the ground force is linear in AF2), i.e. the seat's reaction is
+lumped with the lower cell. Off the seat that AF2 equals the history's. The member loads therefore balance
+the simulated ground force at every step.
+
+Telescoping legs are not covered: their App. III free body (`telescoping_loads`) is a single worst case
+(two adjacent pads crushing at once), not a function of a leg position.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from math import degrees
+
+import numpy as np
+
+from alightsize_sim.articulated_cells import return_spring_force
+from alightsize_sim.articulated_leg import ArticulatedLeg
+from alightsize_sim.articulated_statics import MEMBERS, Reactions, TrussAngles, ground_force, member_loads, reactions
+from alightsize_sim.landing import Result, Scene
+from alightsize_sim.legs import initial_shape, leg_force, lift_shape, pack
+from alightsize_sim.rigid_body import quat_matrix
+
+from alightsize.model.scene_config import SceneConfig
+
+SHAPE_TOL = 1e-9        # m: largest difference between the recovered and the recorded cell deflections
+
+
+def leg_shapes(scene: Scene, res: Result) -> np.ndarray:
+    """(n_steps, n_legs, 3) shape of every leg on the ground at every accepted step, NaN off it: articulated
+    (alpha, beta, psi), telescoping (alpha, beta, 0), rad. ValueError if the recovered shape does not reproduce
+    the recorded deflections (to SHAPE_TOL)."""
+    geo, cells = pack(scene.legs)
+    n_cell = cells[2].shape[1]
+    mem = np.zeros((n_cell, 2))
+    defl, frc, X = np.zeros(n_cell), np.zeros(n_cell), np.zeros(3)
+    y = res.y
+    R = [quat_matrix(q / np.linalg.norm(q)) for q in y[:, 6:10]]
+    out = np.full(res.contact.shape + (3,), np.nan)
+    for i, start in enumerate(initial_shape(scene.legs)):
+        shape = start
+        m = len(scene.legs[i].cells)
+        for k in np.flatnonzero(res.contact[:, i] | np.r_[False, res.contact[:-1, i]]):
+            if not res.contact[k, i]:                  # lifted off after step k - 1: FORCE's stored geometry
+                shape = np.array(lift_shape(geo, i, *out[k - 1, i], y[k - 1, 0:3], R[k - 1]))
+                continue
+            out[k, i] = leg_force(geo, cells, i, mem, shape, res.footpad[k, i], y[k, 0:3], R[k], y[k, 3:6],
+                                  y[k, 10:13], defl, frc, X)[1:]
+            shape = out[k, i].copy()
+            miss = np.max(np.abs(defl[:m] - res.deflections[k, i, :m]))
+            if not miss <= SHAPE_TOL:
+                raise ValueError(f"leg {i + 1} at t = {res.t[k]:.9g} s: the recovered shape misses the recorded "
+                                 f"deflections by {miss:.3g} m")
+    return out
+
+
+@dataclass(frozen=True)
+class LegHistory:
+    """One articulated leg's steps on the ground: shape (rad), the simulated ground force on the peg leg
+    (N, S axes), the cell forces used (N) and the reactions (eq. 53-61, 98-100)."""
+
+    leg: int                  # index into scene.legs
+    steps: np.ndarray         # indices of the accepted steps with the leg on the ground
+    alpha: np.ndarray
+    beta: np.ndarray
+    psi: np.ndarray
+    ground: np.ndarray        # (m, 3) L^T X of the history
+    af1: np.ndarray           # upper cell (history)
+    af2: np.ndarray           # lower-cell line force balancing `ground` (seat lumped in)
+    af2_cell: np.ndarray      # lower cell (history) + return spring
+    reactions: Reactions
+
+
+def leg_histories(scene: Scene, res: Result) -> tuple[LegHistory, ...]:
+    """Shapes, forces and reactions of every articulated leg along the history (ValueError on telescoping
+    legs)."""
+    if not all(isinstance(leg, ArticulatedLeg) for leg in scene.legs):
+        raise ValueError("dynamic member loads need articulated legs (telescoping: App. III free body only)")
+    shapes = leg_shapes(scene, res)
+    out = []
+    for i, leg in enumerate(scene.legs):
+        g, k = leg.geometry, np.flatnonzero(res.contact[:, i])
+        a, b, p = shapes[k, i].T
+        ground = res.leg_force[k, i] @ leg.to_body        # S axes: the simulator writes X = L x (Sec. V.F, FORCE)
+        af1 = res.forces[k, i, 0]
+        base = np.stack(ground_force(g, a, b, p, af1, 0.0), -1)                         # eq. 59-61, linear in AF2:
+        unit = np.stack(ground_force(g, a, b, p, 0.0, 1.0), -1)                         # the AF2 giving `ground`
+        af2 = np.einsum("ij,ij->i", ground - base, unit) / np.einsum("ij,ij->i", unit, unit)
+        af2_cell = res.forces[k, i, 1] + return_spring_force(g, res.deflections[k, i, 1])   # FORCE: + SPRG D2 + PLD
+        out.append(LegHistory(i, k, a, b, p, ground, af1, af2, af2_cell, reactions(g, a, b, p, af1, af2)))
+    return tuple(out)
+
+
+def _members(hist: tuple[LegHistory, ...], shape: tuple[int, int], truss: TrussAngles) -> dict[str, np.ndarray]:
+    out = {m: np.full(shape, np.nan) for m in MEMBERS}
+    for h in hist:
+        for m, v in member_loads(h.reactions, truss).items():                          # eq. 101-106
+            out[m][h.steps, h.leg] = v
+    return out
+
+
+def member_histories(cfg: SceneConfig, res: Result, truss: TrussAngles) -> dict[str, np.ndarray]:
+    """Member -> (n_steps, n_legs) load (N, tension positive), NaN where the leg is off the ground. `truss`:
+    the Fig. 104-105 angles for PL1, PL2, PU1 (a loads config's [truss]; scenes carry none)."""
+    return _members(leg_histories(cfg.scene, res), res.contact.shape, truss)
+
+
+def _at(res: Result, hist: dict[int, LegHistory], field: np.ndarray, pick) -> tuple[float, dict]:
+    k, i = np.unravel_index(int(pick(field)), field.shape)
+    h = hist[int(i)]
+    j = int(np.searchsorted(h.steps, k))
+    return float(field[k, i]), {"t_s": float(res.t[k]), "leg": int(i) + 1, "alpha_deg": degrees(h.alpha[j]),
+                                "beta_deg": degrees(h.beta[j]), "psi_deg": degrees(h.psi[j])}
+
+
+def dynamic_envelope(cfg: SceneConfig, res: Result, truss: TrussAngles) -> list[dict]:
+    """Per member the largest tension (> 0) and compression (< 0) over the history with where they occur:
+    {member, tension_N, tension_at: {t_s, leg (1..), alpha_deg, beta_deg, psi_deg}, compression_N,
+    compression_at}, None where the member never sees that sense. Ties go to the earliest step, then leg."""
+    hist = leg_histories(cfg.scene, res)
+    fields = _members(hist, res.contact.shape, truss)
+    by_leg = {h.leg: h for h in hist}
+    rows = []
+    for m, f in fields.items():
+        row = {"member": m}
+        for key, pick, sign in (("tension", np.nanargmax, 1.0), ("compression", np.nanargmin, -1.0)):
+            hit = np.isfinite(f) & (sign * f > 0)
+            value, at = _at(res, by_leg, f, pick) if hit.any() else (None, None)
+            row[f"{key}_N"], row[f"{key}_at"] = value, at
+        rows.append(row)
+    return rows

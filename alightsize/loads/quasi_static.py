@@ -1,0 +1,127 @@
+"""`alightsize loads`: member-load envelopes of every configuration, the combined envelopes and the
+telescoping free body (App. III), and the references through which design checks take their loads."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from math import degrees
+
+from alightsize_sim.articulated_statics import MEMBERS
+
+from alightsize.common.config import Node
+from alightsize.common.errors import InputError
+from alightsize.loads.envelopes import Extreme, MemberEnvelope, combine, envelope
+from alightsize.loads.config import LoadsConfig, read_loads
+from alightsize.loads.telescoping import free_body
+
+SCHEMA = "alightsize.loads/1"
+TELESCOPING = "telescoping"
+TELESCOPING_FORCES = ("P1", "P2", "P3", "P4")
+SENSES = ("tension", "compression", "magnitude")
+
+
+@dataclass(frozen=True)
+class LoadsResult:
+    config: LoadsConfig
+    envelopes: dict[str, tuple[MemberEnvelope, ...]]     # configurations in file order, then combinations
+    telescoping: dict[str, float] | None                 # App. III free body, SI
+
+    @property
+    def combined(self) -> dict[str, tuple[str, ...]]:
+        return dict(self.config.combined)
+
+
+def run_loads(cfg: LoadsConfig) -> LoadsResult:
+    env = {}
+    for case in cfg.cases:
+        try:
+            env[case.name] = envelope(case, cfg.grid)
+        except ValueError as exc:
+            raise InputError(str(cfg.path), f"configuration {case.name!r}", "a geometry whose equilibrium is defined "
+                             "over the whole grid", str(exc)) from None
+    for name, members in cfg.combined:
+        env[name] = combine([env[m] for m in members])
+    tele = free_body(cfg.telescoping) if cfg.telescoping else None
+    return LoadsResult(cfg, env, tele)
+
+
+def _extreme_json(e: Extreme | None, key: str, combined: bool) -> dict:
+    if e is None:
+        return {f"{key}_N": None, f"{key}_at_deg": None}
+    out = {f"{key}_N": e.value, f"{key}_at_deg": [round(degrees(a), 9) for a in e.at]}
+    if combined:
+        out[f"{key}_configuration"] = e.configuration
+    return out
+
+
+def loads_json(res: LoadsResult) -> dict:
+    """max_member_loads.json (docs/contracts.md, alightsize.loads/1)."""
+    confs = {name: [{"member": r.member, **_extreme_json(r.tension, "tension", name in res.combined),
+                     **_extreme_json(r.compression, "compression", name in res.combined)} for r in rows]
+             for name, rows in res.envelopes.items()}
+    out = {"schema": SCHEMA, "title": res.config.title, "configurations": confs,
+           "combined": {k: list(v) for k, v in res.combined.items()}}
+    if res.telescoping is not None:
+        t = res.telescoping
+        out["telescoping"] = {**{f"{k}_N": t[k] for k in TELESCOPING_FORCES},
+                              "w1_N_per_m": t["w1"], "w2_N_per_m": t["w2"]}
+    return out
+
+
+@dataclass(frozen=True)
+class LoadReference:
+    """A design check load taken from an envelope: where it is used and what it resolved to."""
+
+    key: str
+    envelope: str
+    member: str
+    sense: str
+    factor: float
+    value: float                      # N, magnitude times factor
+    extreme: Extreme | None           # None for the telescoping free body
+
+
+def pick(res: LoadsResult, env: str, member: str, sense: str) -> Extreme | None:
+    """The extreme of `member` in envelope `env` for a sense (magnitude: the larger of the two)."""
+    row = next(r for r in res.envelopes[env] if r.member == member)
+    cands = {"tension": [row.tension], "compression": [row.compression],
+             "magnitude": [row.tension, row.compression]}[sense]
+    cands = [e for e in cands if e is not None]
+    return max(cands, key=lambda e: abs(e.value)) if cands else None
+
+
+def _resolve(res: LoadsResult, node: Node, name: str, ref: dict) -> float:
+    sub = Node(node.file, node.key(name), ref, node.context)
+    sub.allow(("envelope", "member", "sense", "factor"))
+    env = sub.string("envelope")
+    member = sub.string("member")
+    sense = sub.string("sense", "magnitude", choices=SENSES)
+    factor = sub.number("factor", 1.0)
+    sub.finish()
+    if env == TELESCOPING:
+        if res.telescoping is None:
+            raise sub.error("envelope", "a loads file with a [telescoping] table", "none")
+        if member not in TELESCOPING_FORCES:
+            raise sub.error("member", "one of " + ", ".join(TELESCOPING_FORCES), repr(member))
+        value, extreme = abs(res.telescoping[member]) * factor, None
+    else:
+        if env not in res.envelopes:
+            raise sub.error("envelope", "one of " + ", ".join(repr(k) for k in [*res.envelopes, TELESCOPING]), repr(env))
+        if member not in MEMBERS:
+            raise sub.error("member", "one of " + ", ".join(MEMBERS), repr(member))
+        extreme = pick(res, env, member, sense)
+        if extreme is None:
+            raise sub.error("sense", f"a sense in which {member} is loaded in envelope {env!r}", repr(sense))
+        value = abs(extreme.value) * factor
+    node.context.setdefault("load_references", []).append(
+        LoadReference(node.key(name), env, member, sense, factor, value, extreme))
+    return value
+
+
+def attach(node: Node, res: LoadsResult) -> None:
+    """Let every force key under `node` be a table {envelope, member, sense, factor} resolved from `res`."""
+    node.context["force_reference"] = lambda n, name, ref: _resolve(res, n, name, ref)
+
+
+def load_from(path) -> LoadsResult:
+    return run_loads(read_loads(path))

@@ -1,0 +1,133 @@
+"""`alightsize design`: stress checks and sizing -> weights -> summary and reports for one config."""
+
+from __future__ import annotations
+
+from collections import Counter
+from dataclasses import dataclass
+from math import isfinite
+
+from alightsize.checks.audit import CheckRecord, audit_json, run_audit
+from alightsize.pipeline.config import DesignConfig
+from alightsize.pipeline.items import Item
+from alightsize.landings.criteria import violation_kinds
+from alightsize.checks.sizing import Sizing, size_item
+
+SCHEMA = "alightsize.design/1"
+
+
+@dataclass(frozen=True)
+class WeightRow:
+    label: str
+    item: Item
+    count: int
+    each: float          # kg
+    steps: tuple
+
+
+@dataclass(frozen=True)
+class DesignResult:
+    config: DesignConfig
+    items: tuple[Item, ...]        # as designed: sized items carry their sized section
+    records: list[CheckRecord]
+    sizings: list[Sizing]
+    weights: list[WeightRow]
+
+    @property
+    def checks_ok(self) -> bool:
+        """Every check at or above its required design factor, every sized item feasible."""
+        return all(r.ok for r in self.records) and all(s.feasible for s in self.sizings)
+
+    @property
+    def landings_ok(self) -> bool:
+        """Every landing case meets the study's criteria (or the landings are load cases only, or none)."""
+        return self.config.landings is None or self.config.landings.ok
+
+    @property
+    def ok(self) -> bool:
+        return self.checks_ok and self.landings_ok
+
+    def verdict(self) -> str:
+        """One line: whether the design passes, and what fails."""
+        failed = [r for r in self.records if not r.ok]
+        parts = [f"{len(failed)} of {len(self.records)} checks below the required design factor" if failed
+                 else f"all {len(self.records)} checks meet their required design factor"]
+        if any(not s.feasible for s in self.sizings):
+            parts.append("sizing cannot meet the required factor for " +
+                         ", ".join(s.item for s in self.sizings if not s.feasible))
+        land = self.config.landings
+        if land is not None:
+            n, bad = len(land.rows), land.failing
+            if land.role == "load_cases":
+                parts.append(f"{n} landings used as load cases only (criteria not required: {len(bad)} of them "
+                             "violate the study's criteria)")
+            elif bad:
+                parts.append(f"{len(bad)} of {n} landings fail their criteria ({criteria_counts(bad)})")
+            else:
+                parts.append(f"all {n} landings meet their criteria")
+        return ("PASS: " if self.ok else "FAIL: ") + "; ".join(parts)
+
+    @property
+    def per_leg(self) -> float:
+        return sum(w.count * w.each for w in self.weights)
+
+
+def criteria_counts(rows) -> str:
+    """"a cell bottomed 8, XDD(1) > 1000 g/s 24": how many landings violate each kind of criterion."""
+    kinds = Counter(k for r in rows for k in dict.fromkeys(violation_kinds(r["criteria_failed"])))
+    return ", ".join(f"{k} {n}" for k, n in kinds.most_common())
+
+
+def run_design(cfg: DesignConfig) -> DesignResult:
+    sizings, items = [], []
+    for item in cfg.items:
+        if item.size is not None:
+            s = size_item(item)
+            sizings.append(s)
+            item = item.with_section(item.section.with_dim(s.dimension, s.sized))
+        items.append(item)
+    items = tuple(items)
+    records = run_audit(cfg, items)
+    weights = []
+    for item in items:
+        w = item.weight_each()
+        if w is not None:
+            weights.append(WeightRow(item.weight.label or item.name, item, item.count, w[0], tuple(w[1])))
+    return DesignResult(cfg, items, records, sizings, weights)
+
+
+def weights_json(res: DesignResult) -> dict:
+    cfg = res.config
+    total = res.per_leg * cfg.legs
+    return {cfg.configuration: {
+        "items": [{"item": w.label, "count_per_leg": w.count, "weight_each_kg": w.each} for w in res.weights],
+        "per_leg_kg": res.per_leg, "legs": cfg.legs, "total_kg": total, "capsule_kg": cfg.capsule_mass,
+        "fraction_of_capsule": total / cfg.capsule_mass if cfg.capsule_mass else None}}
+
+
+def summary_json(res: DesignResult) -> dict:
+    out = {"schema": SCHEMA, "ok": res.ok, "configuration": res.config.configuration, "verdict": res.verdict(),
+           "checks_ok": res.checks_ok, "landings_ok": res.landings_ok,
+           "audit": {k: v for k, v in audit_json(res.config, res.records).items() if k != "schema"},
+           "weights": weights_json(res)}
+    if res.config.loads is not None:
+        from alightsize.loads.quasi_static import loads_json
+        out["loads"] = {k: v for k, v in loads_json(res.config.loads).items() if k != "schema"}
+    if res.config.landings is not None:
+        from alightsize.pipeline.landings import landings_json
+        out["landings"] = landings_json(res.config.landings)
+    if res.sizings:
+        out["sizing"] = [{"item": s.item, "dimension": s.dimension, "printed_m": s.printed, "sized_m": s.sized,
+                          "design_factor_printed": _finite(s.factor_printed), "design_factor_sized": _finite(s.factor_sized),
+                          "weight_printed_kg": s.weight_printed, "weight_sized_kg": s.weight_sized,
+                          "feasible": s.feasible} for s in res.sizings]
+    return out
+
+
+def _finite(x: float) -> float | None:
+    return x if isfinite(x) else None
+
+
+def governing_cases(cfg: DesignConfig) -> list[str]:
+    """Configurations whose envelope extremes the checks use, in the order of the loads file."""
+    used = {r.extreme.configuration for r in cfg.load_refs if r.extreme is not None}
+    return [c.name for c in cfg.loads.config.cases if c.name in used] if cfg.loads else []

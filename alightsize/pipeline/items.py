@@ -1,0 +1,135 @@
+"""Leg items (the report's members): material, section, the checks that apply, weight and sizing."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from math import inf
+
+from alightsize.common import units
+from alightsize.checks.kinds import KINDS, Check, Outcome, out_of_range, read_check
+from alightsize.common.config import Node
+from alightsize.common.errors import InputError
+from alightsize.model.materials import Material, lookup, require
+from alightsize.model.sections import SHAPES, Section, geometry_error, read_section
+from alightsize.weights.methods import WeightSpec, read_weight
+
+
+@dataclass(frozen=True)
+class SizeSpec:
+    """Size an item instead of checking it: the dimension varied and its range or standard gauges (m)."""
+
+    dimension: str
+    low: float
+    high: float
+    gauges: tuple[float, ...] = ()
+
+
+@dataclass(frozen=True)
+class Item:
+    name: str
+    count: int
+    material: Material
+    section: Section | None
+    length: float | None
+    checks: tuple[Check, ...]
+    required: float
+    weight: WeightSpec | None
+    size: SizeSpec | None = None
+    note: str = ""
+
+    def evaluate(self, section: Section | None = None) -> list[Outcome]:
+        return [c.evaluate(section or self.section, self.material) for c in self.checks]
+
+    def governing_factor(self, section: Section | None = None) -> float:
+        return min((o.factor for o in self.evaluate(section)), default=inf)
+
+    def weight_each(self, section: Section | None = None):
+        """(kg, steps) or None when the item has no weight entry."""
+        if self.weight is None:
+            return None
+        return self.weight.evaluate(section or self.section, self.material, self.length)
+
+    def with_section(self, section: Section) -> "Item":
+        return replace(self, section=section)
+
+
+def _read_size(node: Node, section: Section | None, checks: tuple[Check, ...]) -> SizeSpec:
+    """The size table; refused when a printed property or a check's own value would not follow the size."""
+    if section is None:
+        raise node.error("dimension", "an item with a [section] to size", "no section")
+    if section.overrides:
+        raise node.error("dimension", "a section without printed area/inertia/c overrides (they would not follow the size)",
+                         ", ".join(section.overrides))
+    dim = node.string("dimension", choices=tuple(section.dims))
+    for check in checks:
+        key = next((k for k, d in check.replaces.items() if d == dim), None)
+        if key is not None:
+            raise node.error("dimension", f"a dimension no check gives its own value for ({check.where}.{key} would "
+                             f"keep its value while the {dim} is sized: remove it, or size another dimension)",
+                             repr(dim))
+    gauges = tuple(sorted(node.parse_quantity("gauges", g, "length") for g in node.raw("gauges", [])))
+    if gauges:
+        low, high = gauges[0], gauges[-1]
+    else:
+        low, high = node.quantity("min", "length"), node.quantity("max", "length")
+        if low >= high:
+            raise node.error("max", "max greater than min", f"min {low:g} m, max {high:g} m")
+    for key, value in (("gauges" if gauges else "min", low), ("gauges" if gauges else "max", high)):
+        problem = geometry_error(section.with_dim(dim, value))
+        if problem:
+            written = node.raw(key)[0] if gauges else node.raw(key)     # lengths shown in the unit written here
+            others = ", ".join(f"{n} {units.in_unit_of(v, written)}" for n, v in section.dims.items() if n != dim)
+            raise node.error(key, f"sizes that keep a real section: {problem[1]}",
+                             f"{dim} {units.in_unit_of(value, written)} with {others}")
+    node.finish()
+    return SizeSpec(dim, low, high, gauges)
+
+
+def read_item(node: Node, materials: dict[str, Material], required_default: float) -> Item:
+    name = node.string("name")
+    count = node.integer("count", 1)
+    mat = lookup(materials, node)
+    sec_node = node.table("section", optional=True)
+    section = read_section(sec_node) if sec_node else None
+    length = node.quantity("length", "length", default=None)
+    checks = tuple(read_check(c) for c in node.tables("check", optional=True, label="kind"))
+    required = node.number("required_design_factor", required_default)
+    w_node = node.table("weight", optional=True)
+    weight = read_weight(w_node, materials) if w_node else None
+    s_node = node.table("size", optional=True)
+    size = _read_size(s_node, section, checks) if s_node else None
+    note = node.string("note", "")
+    node.finish()
+    if not checks and weight is None:
+        raise node.error("check", "at least one [[item.check]] or an [item.weight]", "neither")
+    item = Item(name, count, mat, section, length, checks, required, weight, size, note)
+    _validate(item, node)
+    return item
+
+
+def _validate(item: Item, node: Node) -> None:
+    """Evaluate once so a missing section property or material property is reported as bad input."""
+    for check in item.checks:
+        where = InputError(node.file, check.where, "", "")
+        for prop in KINDS[check.kind][2]:
+            require(item.material, prop, where)
+        bad = out_of_range(check, item.section)
+        if bad:
+            key, expected, found = bad
+            raise InputError(node.file, f"{check.where}.{key}", expected, found)
+        try:
+            check.evaluate(item.section, item.material)
+        except (KeyError, AttributeError, TypeError) as exc:
+            raise InputError(node.file, check.where, f"the item's [section] to give what check {check.kind!r} needs "
+                             f"(shapes: {', '.join(SHAPES)})", f"missing {exc}") from None
+        except (ValueError, ZeroDivisionError) as exc:
+            raise InputError(node.file, check.where, "geometry for which the formula is defined", str(exc)) from None
+
+    if item.weight is not None:
+        try:
+            w, _ = item.weight_each()
+        except (KeyError, AttributeError, TypeError) as exc:
+            raise InputError(node.file, item.weight.where, "the sizes this weight method needs (given here or in the "
+                             "item's [section] and length)", f"missing {exc}") from None
+        if not w > 0:
+            raise InputError(node.file, item.weight.where, "a positive weight", f"{w!r} kg")

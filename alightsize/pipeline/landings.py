@@ -1,0 +1,147 @@
+"""Landing cases of a design (`[landings]` in a design config): a study run through the sweep runner, each
+landing's member-load extremes along its history (alightsize.loads.histories) merged into the quasi-static
+envelopes the checks reference, so each member takes the larger of the App. III sweep and the landings,
+and the report says which governed.
+
+```
+[landings]
+study = "studies/design_landings.toml"   # relative to the design config
+envelopes = ["3457"]                      # the envelopes of the [loads] file the landings extend
+role = "criteria"                         # default: every landing must meet the study's [criteria];
+                                          # "load_cases": the landings only supply member loads
+```
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from functools import partial
+import json
+import tempfile
+from dataclasses import dataclass
+from math import radians
+from pathlib import Path
+
+from alightsize.common.config import Node
+from alightsize.loads.histories import dynamic_envelope
+from alightsize.loads.envelopes import Extreme
+from alightsize.loads.quasi_static import LoadsResult, pick
+from alightsize.landings.run_store import RunStore
+from alightsize.model.scene_config import impact_conditions, read_scene
+from alightsize.landings.study import Study, read_study
+from alightsize.landings.sweep import run_sweep
+
+LANDING = "landing "        # prefix of the `configuration` of an extreme that a landing set
+ROLES = ("criteria", "load_cases")
+
+
+@dataclass(frozen=True)
+class Landings:
+    study: Study
+    envelopes: tuple[str, ...]
+    rows: tuple[dict, ...]            # the stored runs, study order
+    quasi_static: LoadsResult         # the envelopes before the landings joined them
+    role: str = "criteria"            # "criteria": the design passes only if every landing meets them
+    conditions: tuple[dict, ...] = () # per run: scene_config.impact_conditions
+
+    @property
+    def failing(self) -> tuple[dict, ...]:
+        """The runs that violate the study's criteria."""
+        return tuple(r for r in self.rows if r.get("criteria_ok") == 0)
+
+    @property
+    def ok(self) -> bool:
+        """Whether the landings let the design pass: always as load cases, else when every one meets them."""
+        return self.role == "load_cases" or not self.failing
+
+
+def _extreme(value: float | None, at: dict | None, run_id: str) -> Extreme | None:
+    if value is None:
+        return None
+    return Extreme(value, (radians(at["alpha_deg"]), radians(at["beta_deg"]), radians(at["psi_deg"])),
+                   LANDING + run_id)
+
+
+def _larger(a: Extreme | None, b: Extreme | None) -> Extreme | None:
+    """The larger magnitude; a quasi-static extreme keeps a tie."""
+    if a is None or b is None:
+        return a or b
+    return b if abs(b.value) > abs(a.value) else a
+
+
+def merge(loads: LoadsResult, rows: tuple[dict, ...], names: tuple[str, ...]) -> LoadsResult:
+    """The envelopes `names` extended by every landing's member extremes (others unchanged)."""
+    env = dict(loads.envelopes)
+    for name in names:
+        members = []
+        for m in env[name]:
+            t, c = m.tension, m.compression
+            for r in rows:
+                for d in json.loads(r.get("member_loads_json") or "[]"):
+                    if d["member"] == m.member:
+                        t = _larger(t, _extreme(d["tension_N"], d["tension_at"], r["run_id"]))
+                        c = _larger(c, _extreme(d["compression_N"], d["compression_at"], r["run_id"]))
+            members.append(dataclasses.replace(m, tension=t, compression=c))
+        env[name] = tuple(members)
+    return dataclasses.replace(loads, envelopes=env)
+
+
+def run_landings(node: Node, design: Path, loads: LoadsResult | None, out: Path | None) -> tuple[LoadsResult, Landings]:
+    """Read `[landings]`, run its study into `out` (resumable; a temporary folder when None) and merge."""
+    node.allow(("study", "envelopes", "role", "note"))
+    path = design.parent / node.string("study")
+    names = tuple(node.strings("envelopes"))
+    role = node.string("role", "criteria", choices=ROLES)
+    node.string("note", "")
+    node.finish()
+    if loads is None or not loads.config.cases:
+        raise node.error("study", "landing cases beside an articulated [loads] file (its truss angles and "
+                         "envelopes)", "no articulated [loads] configuration")
+    for n in names:
+        if n not in loads.envelopes:
+            raise node.error("envelopes", "names of envelopes of the [loads] file (" + ", ".join(loads.envelopes) + ")",
+                             repr(n))
+    if not path.is_file():
+        raise node.error("study", "the path of a study TOML (relative to the design config)", f"{str(path)!r}: no such file")
+    study = read_study(path)
+    if role == "criteria" and study.criteria is None:
+        raise node.error("role", f"role = \"load_cases\", or [criteria] in {path.name} for the landings to meet",
+                         "role = \"criteria\" (the default) and a study without [criteria]")
+    with tempfile.TemporaryDirectory() as tmp:
+        folder = out or Path(tmp)
+        run_sweep(study, folder, member_loads=partial(dynamic_envelope, truss=loads.config.cases[0].truss))
+        store = RunStore(folder / "runs.sqlite")
+        rows = tuple(store.rows([r.run_id for r in study.runs]))
+        store.close()
+    failed = [r for r in rows if r["status"] != "done"]
+    if failed:
+        raise node.error("study", "landing cases that all run", f"runs {', '.join(r['run_id'] for r in failed)} "
+                         f"failed: {failed[0]['message']}")
+    conditions = tuple(impact_conditions(read_scene(r.scene, r.overrides)) for r in study.runs)
+    return merge(loads, rows, names), Landings(study, names, rows, loads, role, conditions)
+
+
+def quasi_static_load(landings: Landings, envelope: str, member: str, sense: str) -> float | None:
+    """The load magnitude an envelope reference had before the landings joined (None: not loaded so)."""
+    qs = pick(landings.quasi_static, envelope, member, sense)
+    return abs(qs.value) if qs else None
+
+
+def landings_json(landings: Landings) -> list[dict]:
+    """design summary.json `landings` (docs/contracts.md): scene, conditions, outcome, criteria, peak and energy per
+    landing case."""
+    out = []
+    for r, c in zip(landings.rows, landings.conditions):
+        out.append({"run_id": r["run_id"], "scene": r["scene"], "parameters": json.loads(r["params_json"]),
+                    "conditions": c, "outcome": r["outcome"], "outcome_class": r["outcome_class"],
+                    "criteria_ok": None if r.get("criteria_ok") is None else bool(r["criteria_ok"]),
+                    "criteria_failed": [f for f in (r.get("criteria_failed") or "").split("; ") if f],
+                    "peak": {"xdd_g": [r[f"peak_xdd{i}_g"] for i in (1, 2, 3)],
+                             "omd_rad_s2": [r[f"peak_omd{i}_rad_s2"] for i in (1, 2, 3)],
+                             "onset_g_s": [r[f"peak_onset_xdd{i}_g_s"] for i in (1, 2, 3)]},
+                    "energy": {k: r[f"energy_{k}"] for k in ("initial_J", "absorbed_J", "elastic_J", "friction_J",
+                                                            "kinetic_end_J", "potential_change_J")}
+                    | {"closure_rel": r["closure_rel"]},
+                    "member_loads": json.loads(r["member_loads_json"])})
+    return out
+

@@ -1,0 +1,255 @@
+"""Appendix IV-style stress sheets and Appendix V-style weight sheets: HTML, Markdown and XLSX."""
+
+from __future__ import annotations
+
+import json
+import re
+from collections import Counter
+from math import isfinite
+from pathlib import Path
+
+from openpyxl import Workbook
+from openpyxl.styles import Font
+
+from alightsize import __version__
+from alightsize.checks.audit import failure_label
+from alightsize.common.trace import Step
+from alightsize.common.units import fmt, to_display, unit_label
+from alightsize.pipeline.design import DesignResult, criteria_counts, governing_cases, summary_json
+from alightsize.pipeline.landings import LANDING, quasi_static_load
+from alightsize.reports.loads_report import context as loads_context
+from alightsize.reports.loads_report import heatmap, write_workbook as write_loads_workbook
+from alightsize.reports.plots import design_factor_chart, weight_chart
+from alightsize.reports.rendering import save_workbook, template_env, text_cell
+from alightsize.common.atomic import write_atomic
+
+
+_POWERED = re.compile(r"\{([^{}]+)\}(?=[²³⁴])")
+
+
+def _substituted(formula: str, values: dict[str, str]) -> str:
+    """The formula with each input's display value; a raised value with a unit or sign in parentheses, so
+    t² reads (4.980 in)², not 4.980 in²."""
+    def wrap(m: re.Match) -> str:
+        text = values[m.group(1)]
+        return f"({m.group(0)})" if " " in text or text.startswith("-") else m.group(0)
+    return _POWERED.sub(wrap, formula).format(**values)
+
+
+def _step(step: Step, system: str) -> dict:
+    names = {n: n for n, _, _ in step.inputs}
+    values = {n: fmt(v, d, system) for n, v, d in step.inputs}
+    return {"label": step.label, "symbol": step.symbol, "formula": step.formula.format(**names),
+            "substituted": _substituted(step.formula, values), "value": fmt(step.value, step.dim, system),
+            "given": step.formula == f"{{{step.symbol}}}"}
+
+
+def _factor(f: float) -> str:
+    return f"{f:.2f}" if isfinite(f) else "∞"
+
+
+def _check_title(kind: str, mode: str) -> str:
+    """"column buckling", or "plate fixed center load (plate bending)" where the failure mode differs."""
+    words = kind.replace("_", " ")
+    return words if kind == mode else f"{words} ({mode.replace('_', ' ')})"
+
+
+def _dims(item, system: str) -> str:
+    s = item.section
+    if s is None:
+        return ""
+    parts = [f"{k.replace('_', ' ')} {fmt(v, 'length', system)}" for k, v in s.dims.items()]
+    parts += [f"{k} {fmt(v, {'area': 'area', 'inertia': 'second_moment', 'c': 'length'}[k], system)} (printed)"
+              for k, v in s.overrides.items()]
+    return f"{s.shape}: " + ", ".join(parts)
+
+
+def context(res) -> dict:
+    """Everything the templates show, already formatted in the config's display units."""
+    cfg, system = res.config, res.config.units
+    sheets = []
+    for item in res.items:
+        recs = [r for r in res.records if r.item is item]
+        sheets.append({
+            "name": item.name, "count": item.count, "material": item.material.name, "size": _dims(item, system),
+            "note": item.note,
+            "checks": [{"title": _check_title(item.checks[r.index].kind, r.outcome.mode), "note": item.checks[r.index].note,
+                        "steps": [_step(s, system) for s in r.outcome.steps],
+                        "allowable": fmt(r.outcome.allowable, "stress", system) if r.outcome.allowable else "",
+                        "factor": r.stated_factor, "required": f"{r.required:.2f}", "ok": r.ok,
+                        "flips": r.rounding_flips}
+                       for r in recs]})
+    weights = [{"label": w.label, "count": w.count, "each": fmt(w.each, "mass", system),
+                "total": fmt(w.count * w.each, "mass", system), "steps": [_step(s, system) for s in w.steps]}
+               for w in res.weights]
+    total = res.per_leg * cfg.legs
+    sizing = [{"item": s.item, "dimension": s.dimension.replace("_", " "), "printed": fmt(s.printed, "length", system),
+               "sized": fmt(s.sized, "length", system), "f_printed": _factor(s.factor_printed),
+               "f_sized": _factor(s.factor_sized), "feasible": s.feasible,
+               "w_printed": fmt(s.weight_printed, "mass", system) if s.weight_printed else "",
+               "w_sized": fmt(s.weight_sized, "mass", system) if s.weight_sized else "",
+               "saved": fmt(s.weight_printed - s.weight_sized, "mass", system)
+               if s.weight_printed and s.weight_sized else ""} for s in res.sizings]
+    return {"loads": _loads_context(cfg, system), "references": _references(cfg, system),
+            "verdict": res.verdict(), "checks_ok": res.checks_ok, "landings": _landings(cfg, system),
+            "title": cfg.title, "configuration": cfg.configuration, "source": cfg.path.name, "units": system,
+            "version": __version__, "ok": res.ok, "sheets": sheets, "weights": weights, "sizing": sizing,
+            "per_leg": fmt(res.per_leg, "mass", system), "legs": cfg.legs, "total": fmt(total, "mass", system),
+            "capsule": fmt(cfg.capsule_mass, "mass", system) if cfg.capsule_mass else "",
+            "percent": f"{100 * total / cfg.capsule_mass:.2f}" if cfg.capsule_mass else "",
+            "failed": [failure_label(r) for r in res.records if not r.ok]}
+
+
+def _conditions(c: dict, system: str) -> str:
+    """"35.0 ft/s down, 15.0 ft/s horizontal downhill on a 20° slope, μ 1.5 / 1.0" (friction above 100 reads
+    "non-slip"; the direction is downhill, uphill or across within 45° of each)."""
+    mu = "non-slip" if c["mu_static"] >= 100 else f"μ {c['mu_static']:g} / {c['mu_dynamic']:g}"
+    heading = c.get("from_downhill_deg")
+    way = "" if heading is None else " downhill" if heading < 45 else " uphill" if heading > 135 else " across"
+    ground = f"on a {c['slope_deg']:.0f}° slope" if round(c["slope_deg"]) else "on level ground"
+    return (f"{fmt(c['vertical_m_s'], 'velocity', system, 3)} down, {fmt(c['horizontal_m_s'], 'velocity', system, 3)} "
+            f"horizontal{way} {ground}, {mu}")
+
+
+def landing_rows(cfg, system: str) -> dict[str, dict]:
+    """run id -> what the report shows of a landing case: parameters as written, conditions, outcome, peaks
+    (g of standard gravity, as the criteria), onset rates and the criteria it violates."""
+    land = cfg.landings
+    out = {}
+    for r, c in zip(land.rows, land.conditions):
+        params = {k: v for k, v in json.loads(r["params_json"]).items() if k != "scene"}
+        out[r["run_id"]] = {
+            "id": r["run_id"], "scene": r["scene"], "anchor": "landing-" + re.sub(r"[^A-Za-z0-9_-]", "_", r["run_id"]),
+            "parameters": ", ".join(f"{k.split('.')[-1]} {v}" for k, v in params.items()),
+            "conditions": _conditions(c, system), "outcome": r["outcome"],
+            "outcome_class": r["outcome_class"].replace("_", " "),
+            "peak": [f"{r[f'peak_xdd{i}_g']:.2f}" for i in (1, 2, 3)],
+            "onset": [f"{r[f'peak_onset_xdd{i}_g_s']:,.0f}" for i in (1, 2, 3)],
+            "ok": r.get("criteria_ok") != 0,
+            "failures": [f for f in (r.get("criteria_failed") or "").split("; ") if f]}
+    return out
+
+
+def _landings(cfg, system: str) -> dict | None:
+    """The landing section: every case, the criteria, how many fail and why, the role of the landings."""
+    land = cfg.landings
+    if land is None:
+        return None
+    crit = land.study.criteria
+    limits = []
+    if crit is not None:
+        if crit.max_xdd_g:
+            limits.append("peak XDD(1, 2, 3) at most " + " / ".join(f"{x:g}" for x in crit.max_xdd_g) + " g")
+        if crit.max_onset_g_s:
+            limits.append("onset at most " + " / ".join(f"{x:,.0f}" for x in crit.max_onset_g_s) + " g/s")
+        limits += [text for flag, text in ((crit.no_bottoming, "no cell bottoms"), (crit.no_tumbling, "no tipping"),
+                                           (crit.no_body_contact, "no body contact")) if flag]
+    rows = list(landing_rows(cfg, system).values())
+    return {"role": land.role, "study": land.study.name, "count": len(rows), "rows": rows,
+            "criteria": "; ".join(limits) or "none given", "failing": len(land.failing),
+            "counts": criteria_counts(land.failing),
+            "outcomes": ", ".join(f"{k} {n}" for k, n in Counter(r["outcome"] for r in land.rows).most_common())}
+
+
+def _loads_context(cfg, system: str) -> dict | None:
+    return loads_context(cfg.loads, system, governing_cases(cfg)) if cfg.loads is not None else None
+
+
+def _reference_label(cfg, key: str) -> str:
+    """A check's load key, 'item["Upper Truss"].check["column_buckling"].load' -> "Upper Truss / column buckling (load)"."""
+    for item in cfg.items:
+        for check in item.checks:
+            if key.startswith(check.where + "."):
+                return f"{item.name} / {check.kind.replace('_', ' ')} ({key[len(check.where) + 1:]})"
+    return key
+
+
+def _references(cfg, system: str) -> list[dict]:
+    """The checks' envelope loads; with landing cases also the quasi-static load, which governed and, for a
+    landing, its conditions and outcome."""
+    from math import degrees
+    landings = landing_rows(cfg, system) if cfg.landings is not None else {}
+    out = []
+    for r in cfg.load_refs:
+        row = {"key": _reference_label(cfg, r.key), "envelope": r.envelope, "member": r.member, "sense": r.sense,
+               "factor": f"{r.factor:g}", "value": fmt(r.value, "force", system),
+               "at": ", ".join(f"{degrees(a):+.0f}" for a in r.extreme.at) if r.extreme else "",
+               "configuration": r.extreme.configuration if r.extreme else "", "quasi_static": None, "governs": "",
+               "landing": None}
+        if cfg.landings is not None and r.extreme is not None and r.envelope in cfg.landings.envelopes:
+            qs = quasi_static_load(cfg.landings, r.envelope, r.member, r.sense)
+            row["quasi_static"] = fmt(qs * r.factor, "force", system) if qs is not None else "-"
+            row["governs"] = "landing" if r.extreme.configuration.startswith(LANDING) else "quasi-static"
+            row["landing"] = landings.get(r.extreme.configuration.removeprefix(LANDING))
+        out.append(row)
+    return out
+
+
+def render_html(res) -> str:
+    return template_env(True).get_template("design_report.html.j2").render(**context(res))
+
+
+def render_markdown(res) -> str:
+    return template_env(False).get_template("design_report.md.j2").render(**context(res))
+
+
+def write_workbook(res, path: Path) -> None:
+    """Stress sheet and weight sheet, values in the display units, numbers as numbers."""
+    cfg, system = res.config, res.config.units
+    wb = Workbook()
+    ws = wb.active
+    ws.title = "Stress"
+    su = unit_label("stress", system)
+    head = ["Item", "Count per leg", "Material", "Check", "Failure mode", f"Stress ({su})", f"Allowable ({su})",
+            "Design factor", "Required", "OK"]
+    ws.append(head)
+    for r in res.records:
+        o = r.outcome
+        row = [None, r.item.count, None, r.item.checks[r.index].kind, o.mode,
+               round(to_display(o.stress, "stress", system), 1) if o.stress is not None else None,
+               round(to_display(o.allowable, "stress", system), 1) if o.allowable is not None else None,
+               round(o.factor, 4) if isfinite(o.factor) else None, r.required, "yes" if r.ok else "NO"]
+        ws.append(row)
+        text_cell(ws.cell(ws.max_row, 1), r.item.name)
+        text_cell(ws.cell(ws.max_row, 3), r.item.material.name)
+    wu = unit_label("mass", system)
+    wsw = wb.create_sheet("Weights")
+    wsw.append(["Item", "Count per leg", f"Weight each ({wu})", f"Weight per leg ({wu})"])
+    for w in res.weights:
+        each = round(to_display(w.each, "mass", system), 4)
+        wsw.append([None, w.count, each, round(each * w.count, 4)])
+        text_cell(wsw.cell(wsw.max_row, 1), w.label)
+    per_leg = to_display(res.per_leg, "mass", system)
+    wsw.append(["Total each leg", None, None, round(per_leg, 4)])
+    wsw.append([f"Total {cfg.legs} legs", None, None, round(per_leg * cfg.legs, 4)])
+    if cfg.capsule_mass:
+        wsw.append(["Percent of capsule", None, None, round(100 * res.per_leg * cfg.legs / cfg.capsule_mass, 3)])
+    for sheet in (ws, wsw):
+        for c in sheet[1]:
+            c.font = Font(bold=True)
+        for col in sheet.columns:
+            sheet.column_dimensions[col[0].column_letter].width = max(12, max(len(str(c.value or "")) for c in col) + 2)
+    save_workbook(wb, path)
+
+
+def write_design(res: DesignResult, out: Path) -> list[Path]:
+    """summary.json, report.html, report.md, design.xlsx and charts in `out`, each written atomically."""
+    out.mkdir(parents=True, exist_ok=True)
+    summary = json.dumps(summary_json(res), indent=2, allow_nan=False) + "\n"
+    return [write_atomic(out / "summary.json", summary),
+            write_atomic(out / "report.html", render_html(res)),
+            write_atomic(out / "report.md", render_markdown(res)),
+            write_atomic(out / "design.xlsx", lambda p: write_workbook(res, p)),
+            write_atomic(out / "design_factors.png", lambda p: design_factor_chart(res, p)),
+            write_atomic(out / "weights.png", lambda p: weight_chart(res, p))] + _loads_files(res, out)
+
+
+def _loads_files(res: DesignResult, out: Path) -> list[Path]:
+    """The envelopes' workbook, and heat maps of the governing configurations, beside the design report."""
+    loads, system = res.config.loads, res.config.units
+    if loads is None:
+        return []
+    files = [write_atomic(out / "max_member_loads.xlsx", lambda p: write_loads_workbook(loads, p, system))]
+    for name in governing_cases(res.config):
+        files.append(write_atomic(out / f"heatmap_{name}.png", lambda p, n=name: heatmap(loads, n, p, system)))
+    return files

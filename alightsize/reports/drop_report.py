@@ -1,0 +1,366 @@
+"""Drop-test comparison report (issue 5): drops 1-11 of AFFDL-TR-66-33 Sec. VI (Table 5, no drop 7) simulated
+with the test model, beside the printed Tables 6-13 (permanent strokes and absorbed energies per leg and cell,
+totals, percent error against the drop energy), the energy comparison of Fig. 102, and per drop XDD(1..3) and
+OMD(1..3) against time with the shock spectrum of XDD(3).
+
+`python -m alightsize.reports.drop_report --out DIR` writes DIR/drops.json (alightsize.drops/1, SI, unit-suffixed
+fields), DIR/drops.html and DIR/drops.md (US units, as the report prints) and the PNGs; `alightsize reports`
+regenerates reports/affdl-tr-66-33/drops/ with it. It needs the source checkout: the scenes are
+examples/affdl-tr-66-33/drops/ and the printed tables alightsize/reports/drop_tables.py.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+from functools import lru_cache
+from pathlib import Path
+from typing import NamedTuple
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+from alightsize_sim.landing import Result, simulate  # noqa: E402
+
+from alightsize import __version__  # noqa: E402
+
+from alightsize.reports import drop_tables  # noqa: E402
+
+from alightsize.common import units  # noqa: E402
+from alightsize.common.atomic import write_atomic  # noqa: E402
+from alightsize.landings.output import body_histories, summary  # noqa: E402
+from alightsize.reports.rendering import template_env  # noqa: E402
+from alightsize.common.resources import data_dir  # noqa: E402
+from alightsize.model.scene_config import SceneConfig, read_scene  # noqa: E402
+from alightsize.landings.shock_spectrum import default_frequencies, srs  # noqa: E402
+
+SCHEMA = "alightsize.drops/1"
+DROPS_DIR = data_dir("examples") / "affdl-tr-66-33" / "drops"
+DROP_NUMBERS = (1, 2, 3, 4, 5, 6, 8, 9, 10, 11)              # AFFDL-TR-66-33 Table 5 (drop 7 deleted, l. 2279)
+SOURCES = ("simulated", "analytical", "experimental")
+FT = units.parse("1 ft", "length")                           # m per ft
+FT_LB = units.parse("1 ft*lbf", "energy")                    # J per ft-lbf
+SRS_FREQUENCIES = default_frequencies(1.0, 1000.0)           # Hz, as `alightsize simulate`'s srs_xdd3.png
+# AFFDL-TR-66-33 List of Figures (l. 205-292): drop -> (figure of XDD(1), the six run on to OMD(3); shock spectra)
+FIGURES = {1: (33, 39), 2: (40, 46), 3: (47, 53), 4: (54, 60), 5: (61, None), 6: (67, 73), 8: (74, 80),
+           9: (81, 87), 10: (88, 94), 11: (95, 101)}
+# AFFDL-TR-66-33 Sec. VI.D, l. 2742: why drops 5 and 11 have no stroke table
+NO_TABLE = {
+    5: "no table in the report: its simulation stopped when the capsule bottom interfered with the ground, while "
+       "the test model may have stroked significantly after that (Sec. VI.D, l. 2742)",
+    11: "no table in the report: its simulation ended when the model pitched 60 deg beyond the vertical, while the "
+        "test model tumbled over and stroked its absorbers further (Sec. VI.D, l. 2742)",
+}
+NOTES = (
+    "Simulated stroke: the permanent set of each cell, its largest deflection less the spring-back "
+    "force / unloading rate (alightsize_sim/crush_cell.permanent_set); the report's analytical strokes are the permanent "
+    "positions at the end of its simulation converted to absorber deflections (Sec. VI.D, l. 2744). The largest "
+    "deflections are in drops.json (simulated_max_deflection_m).",
+    "Simulated energy: the work each cell dissipated (crushing and damping). Analytical energy: the report's "
+    "simulation, corrected for the different loading and unloading slopes (l. 2744-2746). Experimental energy: "
+    "the mean static crushing force times the measured permanent deflection (l. 2744).",
+    "Percent error = (total cell energy - drop energy) / drop energy, as the Percent Error rows of Tables 6-13; "
+    "the drop energy is the printed one (horizontal kinetic energy plus weight times the nominal height, the "
+    "nutation and the alightment-system deflection terms, l. 2748). Difference columns: (simulated - printed) / "
+    "printed; '-' where the printed value is 0.",
+    "Test-model cells (not printed; examples/affdl-tr-66-33/drops/test_model_*.toml and dropNN.toml): per drop "
+    "the crushing forces of the report's own simulation of it (one measured curve per cell type and drop, Sec. "
+    "VI.A; recovered from the analytical energies, or for the flat drops 1 and 6 the experimental ones: "
+    "alightsize/reports/drop_tables.simulation_cell_force), the scaled plateaus for drops 5 and 11, loading ramps of "
+    "0.04 ft (upper) and 0.005 ft (lower) and unloading rates such that the report's analytical energies follow "
+    "from its analytical strokes (E = F (s - d), d = F/2 (1/k_load - 1/k_unload), l. 2746; "
+    "docs/notes/drop-test-data.md section 5); capsule bottom 0.5 ft below the CG.",
+    "Table 12 (drop 9): the analytical energy rows of the upper and lower cells are printed swapped (GUIDE); "
+    "they are shown swapped back (alightsize/reports/drop_tables.CORRECTIONS); the total 2,680 ft-lb is unchanged.",
+    "Units: ft and ft-lb as the report prints; drops.json is SI. Upper cell = parallelogram (psi) cell, lower "
+    "cell = peg-leg (alpha) cell; legs numbered as Fig. 14 (docs/notes/drop-test-data.md 4.3).",
+)
+
+
+class Drop(NamedTuple):
+    """One simulated drop: its number in Table 5, the scene and the landing."""
+
+    number: int
+    cfg: SceneConfig
+    res: Result
+
+
+def run_drop(number: int, folder: Path = DROPS_DIR) -> Drop:
+    """Simulate folder/dropNN.toml (read_scene + simulate, as `alightsize simulate`), once per process."""
+    return _run(number, Path(folder).resolve())
+
+
+@lru_cache(maxsize=None)
+def _run(number: int, folder: Path) -> Drop:
+    """run_drop's cache, keyed by the resolved folder."""
+    cfg = read_scene(folder / f"drop{number:02d}.toml")
+    return Drop(number, cfg, simulate(cfg.scene, cfg.controls))
+
+
+@lru_cache(maxsize=1)
+def _tables() -> dict:
+    """Tables 6-13 with Table 12's swapped energy rows corrected (GUIDE), by drop number."""
+    return drop_tables.corrected_strokes_energies()
+
+
+def _rel(value: float, printed: float | None) -> float | None:
+    """(value - printed) / printed; None without a non-zero printed value (AFFDL-TR-66-33 Tables 6-13 Percent Error)."""
+    return (value - printed) / printed if printed else None
+
+
+def compare(drop: Drop) -> list[dict]:
+    """One row per leg and cell (upper = psi cell, lower = alpha cell), SI: the simulated permanent stroke and
+    absorbed energy beside the analytical and experimental columns of Tables 6-13 (None without a table)."""
+    table = _tables().get(drop.number)
+    rows = []
+    for leg in summary(drop.cfg, drop.res)["legs"]:
+        for cell in leg["cells"]:
+            row = {"leg": leg["leg"], "cell": cell["cell"], "simulated_stroke_m": cell["permanent_set_m"],
+                   "simulated_max_deflection_m": cell["max_deflection_m"], "simulated_energy_J": cell["energy_J"]}
+            for side in SOURCES[1:]:
+                printed = table[side][cell["cell"]] if table else None
+                stroke = printed["stroke_ft"][leg["leg"] - 1] * FT if printed else None
+                energy = printed["energy_ft_lb"][leg["leg"] - 1] * FT_LB if printed else None
+                row |= {f"{side}_stroke_m": stroke, f"{side}_energy_J": energy,
+                        f"stroke_diff_{side}_rel": _rel(cell["permanent_set_m"], stroke),
+                        f"energy_diff_{side}_rel": _rel(cell["energy_J"], energy)}
+            rows.append(row)
+    return rows
+
+
+def totals(rows: list[dict], table: dict | None, drop_energy: float | None) -> dict:
+    """Per source the eight cells' total stroke and energy and the energy error against the drop energy (Tables
+    6-13 Percent Error); for the printed sources also the table's own total and percent error; for the simulation
+    its total stroke and energy against the printed totals."""
+    out = {}
+    for src in SOURCES if table else SOURCES[:1]:
+        energy = sum(r[f"{src}_energy_J"] for r in rows)
+        out[src] = {"stroke_m": sum(r[f"{src}_stroke_m"] for r in rows), "energy_J": energy,
+                    "energy_error_rel": _rel(energy, drop_energy)}
+        if src != "simulated":
+            out[src] |= {"printed_energy_J": table[src]["total_energy_ft_lb"] * FT_LB,
+                         "printed_energy_error_rel": table[src]["percent_error"] / 100}
+            out["simulated"] |= {f"stroke_diff_{src}_rel": _rel(out["simulated"]["stroke_m"], out[src]["stroke_m"]),
+                                 f"energy_diff_{src}_rel": _rel(out["simulated"]["energy_J"], out[src]["energy_J"])}
+    return out
+
+
+def drop_entry(drop: Drop) -> dict:
+    """Everything drops.json holds for one drop (SI, unit-suffixed numeric fields)."""
+    cfg, n = drop.cfg, drop.number
+    table = _tables().get(n)
+    s = summary(cfg, drop.res)
+    rows = compare(drop)
+    drop_energy = table["drop_energy_ft_lb"] * FT_LB if table else None
+    xdd = body_histories(cfg, drop.res)[0]
+    return {"drop": n, "scene": cfg.name, "title": cfg.title, "table": table["table"] if table else None,
+            "report_text": drop_tables.DROPS[n]["text"], "note": NO_TABLE.get(n),
+            "outcome": s["outcome"], "reason": s["reason"], "t_end_s": s["t_end_s"],
+            "drop_energy_J": drop_energy, "cells": rows, "totals": totals(rows, table, drop_energy),
+            "peak": {k: s["peak"][k] for k in ("xdd_g", "omd_rad_s2")}, "energy": s["energy"],
+            "srs_xdd3": {"damping_rel": cfg.srs_damping, "frequency_Hz": SRS_FREQUENCIES.tolist(),
+                         "acceleration_g": srs(drop.res.t, xdd[:, 2], SRS_FREQUENCIES, cfg.srs_damping).tolist()}}
+
+
+def closure(entries: list[dict]) -> dict:
+    """Mean and largest |energy error| over the drops with a table, per source (the printed Percent Errors for the
+    report's columns; cf. l. 2750: analytical mean < 0.5 %, largest 4.1 %; experimental mean 22.9 %, largest 30.0 %),
+    and the simulated total strokes against the analytical ones."""
+    tabled = [e["totals"] for e in entries if e["table"] is not None]
+    out = {}
+    for src in SOURCES:
+        key = "energy_error_rel" if src == "simulated" else "printed_energy_error_rel"
+        err = np.abs([t[src][key] for t in tabled])
+        out[src] = {"mean_abs_energy_error_rel": float(err.mean()), "max_abs_energy_error_rel": float(err.max())}
+    strokes = np.abs([t["simulated"]["stroke_diff_analytical_rel"] for t in tabled])
+    out["simulated"] |= {"mean_abs_stroke_diff_analytical_rel": float(strokes.mean()),
+                         "max_abs_stroke_diff_analytical_rel": float(strokes.max())}
+    return out
+
+
+def document(drops: list[Drop]) -> dict:
+    """drops.json (alightsize.drops/1)."""
+    entries = [drop_entry(d) for d in drops]
+    return {"schema": SCHEMA, "source": "AFFDL-TR-66-33 Sec. VI: Table 5 scenes, Tables 6-13, Fig. 102",
+            "closure": closure(entries), "drops": entries}
+
+
+# ------------------------------------------------------------------ human-facing: US units, as the report prints
+def _ft(v: float | None) -> str:
+    """m -> ft, 4 decimals as Tables 6-13."""
+    return "-" if v is None else f"{v / FT:.4f}"
+
+
+def _ftlb(v: float | None) -> str:
+    """J -> ft-lb, whole as Tables 6-13."""
+    return "-" if v is None else f"{v / FT_LB:,.0f}"
+
+
+def _pct(v: float | None) -> str:
+    """A fraction as a signed percent, 1 decimal as the Percent Error rows."""
+    return "-" if v is None else f"{100 * v:+.1f}"
+
+
+def _row(r: dict) -> dict:
+    """A cell row of a drop's table, formatted."""
+    out = {"leg": r["leg"], "cell": r["cell"], "max": _ft(r["simulated_max_deflection_m"])}
+    for q, unit, f in (("stroke", "m", _ft), ("energy", "J", _ftlb)):
+        out |= {f"{q}_{src}": f(r[f"{src}_{q}_{unit}"]) for src in SOURCES}
+        out |= {f"{q}_diff_{src}": _pct(r[f"{q}_diff_{src}_rel"]) for src in SOURCES[1:]}
+    return out
+
+
+def _drop_context(e: dict) -> dict:
+    """One drop's section of the report, formatted."""
+    t = e["totals"]
+    first, spectrum = FIGURES[e["drop"]]
+    total = {"leg": "Total", "cell": "", "max": _ft(sum(r["simulated_max_deflection_m"] for r in e["cells"]))}
+    for src in SOURCES:
+        total |= {f"stroke_{src}": _ft(t[src]["stroke_m"]) if src in t else "-",
+                  f"energy_{src}": _ftlb(t[src]["energy_J"]) if src in t else "-"}
+    for src in SOURCES[1:]:
+        total |= {f"stroke_diff_{src}": _pct(t["simulated"].get(f"stroke_diff_{src}_rel")),
+                  f"energy_diff_{src}": _pct(t["simulated"].get(f"energy_diff_{src}_rel"))}
+    en = e["energy"]
+    return {"number": e["drop"], "title": e["title"], "scene": e["scene"], "table": e["table"], "note": e["note"],
+            "report_text": e["report_text"], "outcome": e["outcome"], "reason": e["reason"],
+            "t_end": f"{e['t_end_s']:.4f}", "rows": [_row(r) for r in e["cells"]], "total": total,
+            "drop_energy": _ftlb(e["drop_energy_J"]),
+            "error": _pct(t["simulated"]["energy_error_rel"]),
+            "printed_error": {src: _pct(t[src]["printed_energy_error_rel"]) if src in t else "-"
+                              for src in SOURCES[1:]},
+            # released energy: kinetic at first contact + potential change (docs/contracts.md, alightsize.simulate/1)
+            "released": _ftlb(en["initial_J"] + en["potential_change_J"]), "closure": f"{en['closure_rel']:.1e}",
+            "peak_xdd": ", ".join(f"{v:.1f}" for v in e["peak"]["xdd_g"]),
+            "peak_omd": ", ".join(f"{v:,.0f}" for v in e["peak"]["omd_rad_s2"]),
+            "histories": f"drop{e['drop']:02d}_xdd_omd.png", "srs": f"drop{e['drop']:02d}_srs_xdd3.png",
+            "figures": f"{first}-{first + 5}", "srs_figure": spectrum,
+            "damping": f"{100 * e['srs_xdd3']['damping_rel']:.0f}"}
+
+
+def context(doc: dict) -> dict:
+    """Everything the drops templates show, formatted in US units."""
+    c = doc["closure"]
+    overview = [{"drop": e["drop"], "table": e["table"] or "-", "outcome": e["outcome"],
+                 "drop_energy": _ftlb(e["drop_energy_J"]), "energy": _ftlb(e["totals"]["simulated"]["energy_J"]),
+                 "error": _pct(e["totals"]["simulated"]["energy_error_rel"]),
+                 "analytical_error": _pct(e["totals"].get("analytical", {}).get("printed_energy_error_rel")),
+                 "experimental_error": _pct(e["totals"].get("experimental", {}).get("printed_energy_error_rel")),
+                 "stroke": _ft(e["totals"]["simulated"]["stroke_m"]),
+                 "analytical_stroke": _ft(e["totals"].get("analytical", {}).get("stroke_m")),
+                 "stroke_diff": _pct(e["totals"]["simulated"].get("stroke_diff_analytical_rel")),
+                 "xdd3": f"{e['peak']['xdd_g'][2]:.1f}"} for e in doc["drops"]]
+    return {"title": "AFFDL-TR-66-33 drop tests: simulation beside Tables 6-13", "version": __version__,
+            "overview": overview, "drops": [_drop_context(e) for e in doc["drops"]], "notes": NOTES,
+            "closure": {src: {"mean": f"{100 * c[src]['mean_abs_energy_error_rel']:.1f}",
+                              "max": f"{100 * c[src]['max_abs_energy_error_rel']:.1f}"} for src in SOURCES},
+            "stroke_closure": {"mean": f"{100 * c['simulated']['mean_abs_stroke_diff_analytical_rel']:.1f}",
+                               "max": f"{100 * c['simulated']['max_abs_stroke_diff_analytical_rel']:.1f}"}}
+
+
+def render(doc: dict, kind: str) -> str:
+    """The report as HTML (autoescaped) or Markdown (kind "html" or "md")."""
+    return template_env(kind == "html").get_template(f"drops_report.{kind}.j2").render(**context(doc))
+
+
+# ------------------------------------------------------------------ plots
+def _save(fig, path: Path) -> Path:
+    write_atomic(path, lambda tmp: fig.savefig(tmp, format="png", dpi=100, metadata={"Software": None}))
+    plt.close(fig)
+    return path
+
+
+def plot_histories(drop: Drop, path: Path) -> Path:
+    """XDD(1..3) (g) and OMD(1..3) (rad/s^2) in geometric body axes against time (cf. the report's Figs. 33-100)."""
+    xdd, omd = body_histories(drop.cfg, drop.res)
+    fig, axes = plt.subplots(3, 2, figsize=(10, 7), sharex=True)
+    for k in range(3):
+        for col, (data, label) in enumerate(((xdd, f"XDD({k + 1}), g"), (omd, f"OMD({k + 1}), rad/s²"))):
+            axes[k, col].plot(drop.res.t, data[:, k], lw=0.9)
+            axes[k, col].set_ylabel(label)
+            axes[k, col].grid(alpha=0.3)
+    for ax in axes[-1]:
+        ax.set_xlabel("time, s")
+    first = FIGURES[drop.number][0]
+    fig.suptitle(f"{drop.cfg.title}: simulated accelerations (cf. Figs. {first}-{first + 5})")
+    fig.subplots_adjust(wspace=0.3)
+    return _save(fig, path)
+
+
+def plot_srs(entry: dict, path: Path) -> Path:
+    """Maximax shock response spectrum of XDD(3) (cf. the report's Shock Spectra Comparison figures)."""
+    spec = entry["srs_xdd3"]
+    fig, ax = plt.subplots(figsize=(7, 4))
+    ax.loglog(spec["frequency_Hz"], spec["acceleration_g"])
+    ax.set_xlabel("frequency, Hz")
+    ax.set_ylabel("maximax absolute acceleration, g")
+    figure = FIGURES[entry["drop"]][1]
+    ax.set_title(f"{entry['title']}: shock spectrum of XDD(3), {spec['damping_rel']:.0%} damping"
+                 + (f" (cf. Fig. {figure})" if figure else ""))
+    ax.grid(alpha=0.3, which="both")
+    fig.subplots_adjust(bottom=0.14)
+    return _save(fig, path)
+
+
+def plot_energy(doc: dict, path: Path) -> Path:
+    """Total cell energy against the drop energy for every drop with a table, with the 1:1 line (Fig. 102)."""
+    tabled = [e for e in doc["drops"] if e["table"] is not None]
+    x = np.array([e["drop_energy_J"] for e in tabled]) / FT_LB
+    fig, ax = plt.subplots(figsize=(6, 6))
+    for src, marker, key, label in (("simulated", "o", "energy_J", "this simulation"),
+                                    ("analytical", "s", "printed_energy_J", "analytical (printed)"),
+                                    ("experimental", "^", "printed_energy_J", "experimental (printed)")):
+        y = np.array([e["totals"][src][key] for e in tabled]) / FT_LB
+        ax.scatter(x, y, marker=marker, label=label, facecolors="C0" if src == "simulated" else "none",
+                   edgecolors="C0" if src == "simulated" else "k")
+    for e, xi in zip(tabled, x):
+        ax.annotate(str(e["drop"]), (xi, e["totals"]["simulated"]["energy_J"] / FT_LB), fontsize=7,
+                    xytext=(4, -10), textcoords="offset points")
+    lim = (0.0, 1.1 * float(x.max()))
+    ax.plot(lim, lim, "k--", lw=0.8, label="1:1")
+    ax.set_xlim(lim)
+    ax.set_ylim(lim)
+    ax.set_xlabel("drop energy (Tables 6-13), ft-lb")
+    ax.set_ylabel("total cell energy, ft-lb")
+    ax.set_title("Comparison of energy absorption (cf. Fig. 102)")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    return _save(fig, path)
+
+
+def write_drop_report(out_dir: Path, folder: Path = DROPS_DIR) -> list[Path]:
+    """Simulate every drop of `folder` and write drops.json, drops.html, drops.md and the PNGs into out_dir."""
+    out_dir = Path(out_dir)
+    drops = [run_drop(n, folder) for n in DROP_NUMBERS]
+    doc = document(drops)
+    files = [write_atomic(out_dir / "drops.json", json.dumps(doc, indent=2) + "\n"),
+             write_atomic(out_dir / "drops.html", render(doc, "html")),
+             write_atomic(out_dir / "drops.md", render(doc, "md")),
+             plot_energy(doc, out_dir / "fig102_energy.png")]
+    for d, e in zip(drops, doc["drops"]):
+        files += [plot_histories(d, out_dir / f"drop{d.number:02d}_xdd_omd.png"),
+                  plot_srs(e, out_dir / f"drop{d.number:02d}_srs_xdd3.png")]
+    return files
+
+
+def main(argv: list[str] | None = None) -> int:
+    """`python -m alightsize.reports.drop_report --out DIR [--drops FOLDER]`."""
+    p = argparse.ArgumentParser(prog="python -m alightsize.reports.drop_report", description=__doc__.split("\n\n")[0])
+    p.add_argument("--out", required=True, help="output folder")
+    p.add_argument("--drops", default=str(DROPS_DIR), help="folder of the drop scenes drop01.toml ... drop11.toml")
+    args = p.parse_args(argv)
+    files = write_drop_report(Path(args.out), Path(args.drops))
+    for e in json.loads(files[0].read_text())["drops"]:
+        t = e["totals"]["simulated"]
+        print(f"drop {e['drop']:2d}: {e['outcome']:<12} cell energy {_ftlb(t['energy_J']):>6} ft-lb, error "
+              f"{_pct(t['energy_error_rel']):>5} %, total stroke vs analytical "
+              f"{_pct(t.get('stroke_diff_analytical_rel')):>5} %")
+    print(f"wrote {len(files)} files to {args.out}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,149 @@
+"""Writing the loads results: JSON, an XLSX laid out like Tables 14-22, heat maps, Appendix III reports."""
+
+from __future__ import annotations
+
+import json
+from math import degrees
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from openpyxl import Workbook  # noqa: E402
+from openpyxl.styles import Font  # noqa: E402
+
+from alightsize_sim.articulated_statics import MEMBERS  # noqa: E402
+
+from alightsize.common.atomic import write_atomic  # noqa: E402
+from alightsize.loads.envelopes import Extreme, member_fields  # noqa: E402
+from alightsize.loads.quasi_static import LoadsResult, loads_json  # noqa: E402
+from alightsize.common.units import fmt, to_display, unit_label  # noqa: E402
+from alightsize import __version__  # noqa: E402
+from alightsize.reports.rendering import save_workbook, template_env  # noqa: E402
+
+LABELS = {"PL1": "PL1, (PL3)", "PL2": "PL2, (PL6)", "PU1": "PU1, (PU2)", "R1213": "R12/13"}
+_META = {"Software": None}
+
+
+def label(member: str) -> str:
+    """Member label as the tables print it (mirror-image members in parentheses)."""
+    return LABELS.get(member, member)
+
+
+def _row(e: Extreme | None, system: str, with_config: bool) -> dict | None:
+    if e is None:
+        return None
+    a, b, p = (degrees(x) for x in e.at)
+    return {"load": to_display(e.value, "force", system), "text": fmt(e.value, "force", system),
+            "alpha": f"{a:.1f}", "beta": f"{b:+.0f}" if abs(b) > 1e-9 else "0", "psi": f"{p:+.0f}" if abs(p) > 1e-9 else "0",
+            "configuration": e.configuration if with_config else ""}
+
+
+def tables(res: LoadsResult, system: str) -> list[dict]:
+    """Tables 14-22 as rows: member label, tension and compression with positions."""
+    out = []
+    for name, rows in res.envelopes.items():
+        combined = name in res.combined
+        title = (f"Maximum loads, combined configurations {', '.join(res.combined[name])}" if combined
+                 else f"Maximum loads, configuration {name}")
+        out.append({"name": name, "title": title, "combined": combined,
+                    "rows": [{"member": label(r.member), "tension": _row(r.tension, system, combined),
+                              "compression": _row(r.compression, system, combined)} for r in rows]})
+    return out
+
+
+def telescoping_rows(res: LoadsResult, system: str) -> list[dict]:
+    if res.telescoping is None:
+        return []
+    dims = {"P1": "force", "P2": "force", "w2": "spring_rate", "w1": "spring_rate", "P4": "force", "P3": "force"}
+    return [{"name": k, "value": fmt(res.telescoping[k], d, system), "number": to_display(res.telescoping[k], d, system),
+             "unit": unit_label(d, system)} for k, d in dims.items()]     # w: force per length (spring_rate units)
+
+
+def context(res: LoadsResult, system: str, heatmaps: list[str] | None = None) -> dict:
+    """Template context; `heatmaps` names the configurations whose heat maps are shown (default all)."""
+    names = [c.name for c in res.config.cases] if heatmaps is None else heatmaps
+    return {"tables": tables(res, system), "telescoping": telescoping_rows(res, system),
+            "heatmaps": [f"heatmap_{n}.png" for n in names]}
+
+
+def write_workbook(res: LoadsResult, path: Path, system: str) -> None:
+    """One sheet per configuration and per combination, laid out like Tables 14-22; user text is always a
+    string cell (never a formula)."""
+    wb = Workbook()
+    wb.remove(wb.active)
+    unit = unit_label("force", system)
+    for t in tables(res, system):
+        ws = wb.create_sheet(t["name"])
+        ws.append([t["title"]])
+        ws["A1"].font = Font(bold=True)
+        ws.append(["Member", f"Load ({unit})", "alpha (deg)", "beta (deg)", "psi (deg)"]
+                  + (["Configuration"] if t["combined"] else []))
+        for r in t["rows"]:
+            for k, sense in enumerate(("tension", "compression")):
+                e = r[sense]
+                if e is None:
+                    continue
+                row = [r["member"] if k == 0 or r["tension"] is None else "", round(e["load"]), float(e["alpha"]),
+                       float(e["beta"]), float(e["psi"])] + ([e["configuration"]] if t["combined"] else [])
+                ws.append(row)
+                for c in ws[ws.max_row]:
+                    if isinstance(c.value, str):
+                        c.data_type = "s"
+    if res.telescoping is not None:
+        ws = wb.create_sheet("telescoping")
+        ws.append(["Telescoping leg free body (App. III)"])
+        ws.append(["Load", "Value", "Unit"])
+        for r in telescoping_rows(res, system):
+            ws.append([r["name"], round(r["number"], 3), r["unit"]])
+    save_workbook(wb, path)
+
+
+def heatmap(res: LoadsResult, case_name: str, path: Path, system: str) -> None:
+    """Each member's load over alpha-beta at the psi of its largest magnitude."""
+    case = next(c for c in res.config.cases if c.name == case_name)
+    (psi, alpha, beta), fields = member_fields(case, res.config.grid)
+    fig, axes = plt.subplots(2, 5, figsize=(17, 6.5), sharex=True, sharey=True, layout="constrained")
+    a, b = np.degrees(alpha), np.degrees(beta)
+    extent = (a[0], a[-1], b[0], b[-1])
+    bottomed = False
+    for ax, m in zip(axes.flat, MEMBERS):
+        f = to_display(np.asarray(fields[m]), "force", system)      # NaN where a cell has bottomed
+        k = int(np.unravel_index(np.nanargmax(np.abs(f)), f.shape)[0])
+        lim = float(np.nanmax(np.abs(f[k]))) or 1.0
+        bottomed |= bool(np.isnan(f[k]).any())
+        ax.set_facecolor("0.8")
+        im = ax.imshow(f[k].T, origin="lower", extent=extent, aspect="auto", cmap="RdBu_r", vmin=-lim, vmax=lim,
+                       interpolation="nearest")
+        ax.set_title(f"{label(m)} at psi = {np.degrees(psi[k]):+.0f} deg", fontsize=9)
+        fig.colorbar(im, ax=ax)
+    for ax in axes[1]:
+        ax.set_xlabel("alpha (deg)")
+    for ax in axes[:, 0]:
+        ax.set_ylabel("beta (deg)")
+    fig.suptitle(f"Configuration {case_name}: member loads, {unit_label('force', system)} (tension +), over alpha-beta "
+                 "at the governing psi" + ("; grey: a cell has bottomed" if bottomed else ""))
+    fig.savefig(path, format="png", dpi=72, metadata=_META)
+    plt.close(fig)
+
+
+def write_loads(res: LoadsResult, out: Path, system: str | None = None) -> list[Path]:
+    """max_member_loads.json and .xlsx, heat maps and the Appendix III report, each written atomically."""
+    system = system or res.config.units
+    out.mkdir(parents=True, exist_ok=True)
+    files = [write_atomic(out / "max_member_loads.json", json.dumps(loads_json(res), indent=2, allow_nan=False) + "\n"),
+             write_atomic(out / "max_member_loads.xlsx", lambda p: write_workbook(res, p, system))]
+    for c in res.config.cases:
+        files.append(write_atomic(out / f"heatmap_{c.name}.png", lambda p, n=c.name: heatmap(res, n, p, system)))
+    files.append(write_atomic(out / "loads.md", render_loads(res, system, "md")))
+    files.append(write_atomic(out / "loads.html", render_loads(res, system, "html")))
+    return files
+
+
+def render_loads(res, system: str, kind: str) -> str:
+    """The Appendix III report of `alightsize loads` (kind "md" or "html")."""
+    ctx = {"title": res.config.title, "source": res.config.path.name, "units": system, "version": __version__,
+           "loads": context(res, system), "references": []}
+    return template_env(kind == "html").get_template(f"loads_report.{kind}.j2").render(**ctx)

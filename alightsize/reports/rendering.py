@@ -1,0 +1,52 @@
+"""What every report shares: the jinja2 environment over the shipped templates (autoescaped HTML, escaped
+Markdown) and spreadsheet cells that keep user text as text."""
+
+from __future__ import annotations
+
+import datetime
+import io
+import zipfile
+from pathlib import Path
+
+import jinja2
+from openpyxl import Workbook
+from openpyxl.writer.excel import ExcelWriter
+
+from alightsize.common.resources import data_dir
+
+
+def _md_escape(text: str) -> str:
+    out = str(text)
+    for ch in "\\`*_[]<>|#":
+        out = out.replace(ch, "\\" + ch)
+    return out
+
+
+def template_env(autoescape: bool) -> jinja2.Environment:
+    env = jinja2.Environment(loader=jinja2.FileSystemLoader(str(data_dir("templates"))),
+                             autoescape=autoescape, undefined=jinja2.StrictUndefined,
+                             trim_blocks=True, lstrip_blocks=True, keep_trailing_newline=True)
+    env.filters["md"] = _md_escape
+    return env
+
+
+def text_cell(cell, value) -> None:
+    """Put user text in a cell as text, never as a formula."""
+    cell.value = value
+    if isinstance(value, str):
+        cell.data_type = "s"
+
+
+_EPOCH = datetime.datetime(2000, 1, 1)          # stands in for every timestamp a workbook would carry
+
+
+def save_workbook(wb: Workbook, path: Path) -> None:
+    """Save `wb` so that the same workbook gives the same bytes: openpyxl stamps the save time into the
+    document properties and every zip entry; both are set to a fixed date here."""
+    wb.properties.created = wb.properties.modified = _EPOCH
+    raw = io.BytesIO()
+    ExcelWriter(wb, zipfile.ZipFile(raw, "w", zipfile.ZIP_DEFLATED)).save()
+    with zipfile.ZipFile(raw) as src, zipfile.ZipFile(path, "w", zipfile.ZIP_DEFLATED) as dst:
+        for info in src.infolist():
+            dst.writestr(zipfile.ZipInfo(info.filename, date_time=_EPOCH.timetuple()[:6]), src.read(info.filename),
+                         compress_type=zipfile.ZIP_DEFLATED)
