@@ -31,7 +31,7 @@ def _scene(v0=(0.0, 0.0, -V), q0=(1.0, 0, 0, 0), w0=(0.0, 0, 0), slope=0.0):
                  np.array(w0, float))
 
 
-def _exact_flat_drop():
+def _exact_flat_drop(g=G):
     """Max stroke and its time for m x'' = m g - 4 F(x), F piecewise linear: segment by segment in closed form."""
     d, f = np.array(CURVE.deflection), np.array(CURVE.force)
     t, x, v = 0.0, 0.0, V
@@ -40,7 +40,7 @@ def _exact_flat_drop():
         f0 = f[i] - s * d[i]                        # F = f0 + s x on this segment
         if s > 0:
             w = np.sqrt(4 * s / MASS)
-            xe = (MASS * G - 4 * f0) / (4 * s)
+            xe = (MASS * g - 4 * f0) / (4 * s)
             u0, amp = x - xe, np.hypot(x - xe, v / w)
             phi = np.arctan2(v / w, u0)
             if xe + amp <= d[i + 1]:                 # the maximum lies on this segment
@@ -49,7 +49,7 @@ def _exact_flat_drop():
             t += (phi - np.arccos(u1 / amp)) / w
             x, v = d[i + 1], w * np.sqrt(amp ** 2 - u1 ** 2)
         else:
-            a = G - 4 * f0 / MASS                    # constant deceleration (a < 0)
+            a = g - 4 * f0 / MASS                    # constant deceleration (a < 0)
             if x + v * v / (-2 * a) <= d[i + 1]:
                 return x + v * v / (-2 * a), t + v / -a
             dt = (-v + np.sqrt(v * v + 2 * a * (d[i + 1] - x))) / a
@@ -79,6 +79,23 @@ def test_flat_drop_matches_the_closed_form():
     assert np.nanmax(np.abs(axial - stroke)) < 1e-9          # the leg strokes with the CG
     assert np.max(np.abs(res.accel_g[:, :2])) < 1e-9        # no lateral acceleration
     assert np.max(np.abs(res.y[:, 10:13])) < 1e-9            # no rotation
+
+
+@pytest.mark.parametrize("body, g", [("moon", 1.62), ("mars", 3.71), ("0.5 g_0", 0.5 * G)])
+def test_a_flat_drop_in_another_gravity_matches_its_closed_form(body, g):
+    """The shipped flat-drop scene (the same lander as above) with `[scene] gravity` set: its maximum stroke and
+    its time match m x'' = m g - 4 F(x) with the body's g, to 1e-6 relative as on Earth; the accelerations stay
+    in g0 (the plateau's 4 x 30 kN on 1000 kg reads 12.24 g0 whatever the body)."""
+    from alightsize.model.scene_config import read_scene
+    from conftest import EXAMPLES
+    cfg = read_scene(EXAMPLES / "scenes" / "flat_drop.toml", {"scene.gravity": body})
+    assert cfg.scene.gravity == pytest.approx([0.0, 0.0, -g], abs=1e-15)
+    res = simulate(cfg.scene, cfg.controls)
+    stroke = res.y[0, 2] - res.y[:, 2]
+    x_max, t_max = _hermite_peak(res.t, stroke, -res.y[:, 5])
+    x_ex, t_ex = _exact_flat_drop(g)
+    assert abs(x_max - x_ex) / x_ex < 1e-6 and abs(t_max - t_ex) / t_ex < 1e-6
+    assert np.max(res.accel_g[:, 2]) == pytest.approx(4 * 30_000.0 / MASS / G, rel=1e-9)
 
 
 def test_energy_closes_on_an_inclined_landing_with_pads_and_rebound():

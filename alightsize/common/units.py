@@ -79,7 +79,8 @@ def parse(text: str | float | int, dim: str) -> float:
     want = DIMS[dim]
     if dimension_of(q) != (want.mass, want.length, want.time):
         hint = _HINTS.get((dim, dimension_of(q)), "")
-        raise ValueError(f"a {dim} like \"{example(dim)}\"{hint}")
+        article = "an" if dim[0] in "aeiou" else "a"
+        raise ValueError(f"{article} {dim} like \"{example(dim)}\"{hint}")
     value = float(q.to_base_units().magnitude)
     if value != value or value in (float("inf"), float("-inf")):
         raise ValueError("a finite quantity")

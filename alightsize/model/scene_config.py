@@ -21,6 +21,7 @@ from alightsize_sim.articulated_leg import ArticulatedLeg
 from alightsize_sim.telescoping_leg import TelescopingLeg
 
 from alightsize.common.config import Node, load_toml
+from alightsize.model.gravity import read_gravity
 from alightsize.model.legs import LENGTHS, read_curve, read_geometry
 
 
@@ -215,6 +216,7 @@ def read_scene(path: str | Path, overrides: dict[str, object] | None = None) -> 
     head = root.table("scene", optional=True)
     name = head.string("name", path.stem) if head else path.stem
     title = head.string("title", name) if head else name
+    g = read_gravity(head, "gravity") if head else G0
     if head:
         head.finish()
 
@@ -325,7 +327,7 @@ def read_scene(path: str | Path, overrides: dict[str, object] | None = None) -> 
     root.finish()
 
     body = np.zeros((0, 3)) if bottom is None else (to_geo.T @ (np.array([0.0, 0.0, -bottom]) - cg))[None, :]
-    scene = Scene(mass, moments, tuple(legs), lepk @ np.array([0.0, 0.0, -G0]), lepk @ vel, q0, to_geo.T @ rates,
+    scene = Scene(mass, moments, tuple(legs), lepk @ np.array([0.0, 0.0, -g]), lepk @ vel, q0, to_geo.T @ rates,
                   mu_s if mu_s is not None else 1.5e6, mu_d if mu_d is not None else 1.0e6, to_geo.T @ np.array([0.0, 0, 1]),
                   body)
     return SceneConfig(path, name, title, scene, c, to_geo, lepk, interval, srs_damping, tuple(names))
