@@ -35,6 +35,11 @@ def test_audit_of_the_four_examples_fails_only_the_factors_that_pass_as_rounded(
     assert {(c["item"], c["check"]) for c in doc["checks"] if not c["ok"]} == flips
     assert all(c["ok_as_stated"] for c in doc["checks"])          # every factor passes as the report states it
     assert f'failures="{len(flips)}"' in junit.read_text()
+    for c in doc["checks"]:          # MS = f / f_required - 1 (float rounding only), >= 0 exactly when it passes
+        if c["design_factor"] is not None:
+            assert c["margin_of_safety"] == pytest.approx(c["design_factor"] / c["required_design_factor"] - 1,
+                                                          abs=1e-12)
+            assert (c["margin_of_safety"] >= 0) is c["ok"]
 
 
 def test_rounding_never_turns_a_failing_factor_into_a_pass(tmp_path, capsys):

@@ -2,6 +2,7 @@
 
 import importlib.metadata
 import json
+import re
 
 import pytest
 from openpyxl import load_workbook
@@ -97,3 +98,15 @@ def test_si_display_and_user_material(tmp_path):
     tables = [line for line in md.splitlines() if line.startswith("|")]
     assert any("475.7 MPa" in line for line in tables) and not any("psi" in line for line in tables)
     assert "My Al" in md
+
+
+def test_every_check_states_its_margin_of_safety():
+    """Each stress sheet's design-factor line gives MS = f / f_required - 1 beside f (to the two decimals
+    shown), in HTML and Markdown."""
+    res = run_design(read_design(EXAMPLES / "articulated_9.toml"))
+    for text in (render_html(res), render_markdown(res)):
+        shown = re.findall(r"\(required (\d\.\d\d); MS ([+-]\d\.\d\d)\)", text)
+        assert len(shown) == len(res.records)
+        for r, (req, ms) in zip(res.records, shown):
+            assert float(req) == pytest.approx(r.required) and float(ms) == pytest.approx(r.margin, abs=0.005)
+            assert ms.startswith("-") is (not r.ok)

@@ -31,6 +31,21 @@ class CheckRecord:
         return passes(self.outcome.factor, self.required)
 
     @property
+    def margin(self) -> float:
+        """Margin of safety MS = f / f_required - 1 (>= 0 passes; Bruhn 1973 A3.0: allowable / (applied x
+        factor) - 1, with f = allowable / applied); inf where the check has no stress."""
+        return self.outcome.factor / self.required - 1.0
+
+    @property
+    def stated_margin(self) -> str:
+        """MS as the report states it: signed, two decimals ('+0.06', '-0.00' for a failure rounding to 0)."""
+        ms = self.margin
+        if not isfinite(ms):
+            return "∞"
+        text = f"{ms:+.2f}"
+        return text.replace("+", "-") if ms < 0 and text == "+0.00" else text
+
+    @property
     def ok_as_stated(self) -> bool:
         """The verdict on f rounded to `decimals`, as the report states it (the exact verdict without decimals)."""
         f = self.outcome.factor
@@ -56,7 +71,9 @@ class CheckRecord:
         return {"configuration": self.configuration, "item": self.item.name, "check": o.mode,
                 "kind": self.item.checks[self.index].kind, "load_N": o.load, "stress_Pa": o.stress,
                 "allowable_Pa": o.allowable, "design_factor": o.factor if isfinite(o.factor) else None,
-                "required_design_factor": self.required, "ok": self.ok, "ok_as_stated": self.ok_as_stated}
+                "required_design_factor": self.required,
+                "margin_of_safety": self.margin if isfinite(self.margin) else None, "ok": self.ok,
+                "ok_as_stated": self.ok_as_stated}
 
 
 def passes(factor: float, required: float) -> bool:
@@ -81,11 +98,12 @@ def audit_json(cfg: DesignConfig, records: list[CheckRecord]) -> dict:
 
 
 def audit_table(records: list[CheckRecord]) -> str:
-    rows = [("configuration", "item", "check", "f", "required", "result")]
+    rows = [("configuration", "item", "check", "f", "required", "MS", "result")]
     for r in records:
         f = r.outcome.factor
         rows.append((r.configuration, r.item.name, r.item.checks[r.index].kind,
                      f"{f:.3f}" if isfinite(f) else "inf", f"{r.required:.2f}",
+                     f"{r.margin:+.3f}" if isfinite(r.margin) else "inf",
                      ("ok" if r.ok else "FAIL") + (" (passes only as rounded)" if r.rounding_flips else "")))
     widths = [max(len(row[i]) for row in rows) for i in range(len(rows[0]))]
     lines = ["  ".join(c.ljust(w) for c, w in zip(row, widths)).rstrip() for row in rows]

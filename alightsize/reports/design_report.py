@@ -77,6 +77,7 @@ def context(res) -> dict:
                         "steps": [_step(s, system) for s in r.outcome.steps],
                         "allowable": fmt(r.outcome.allowable, "stress", system) if r.outcome.allowable else "",
                         "factor": r.stated_factor, "required": f"{r.required:.2f}", "ok": r.ok,
+                        "margin": r.stated_margin,
                         "flips": r.rounding_flips}
                        for r in recs]})
     weights = [{"label": w.label, "count": w.count, "each": fmt(w.each, "mass", system),
@@ -201,14 +202,15 @@ def write_workbook(res, path: Path) -> None:
     ws.title = "Stress"
     su = unit_label("stress", system)
     head = ["Item", "Count per leg", "Material", "Check", "Failure mode", f"Stress ({su})", f"Allowable ({su})",
-            "Design factor", "Required", "OK"]
+            "Design factor", "Required", "Margin of safety", "OK"]
     ws.append(head)
     for r in res.records:
         o = r.outcome
         row = [None, r.item.count, None, r.item.checks[r.index].kind, o.mode,
                round(to_display(o.stress, "stress", system), 1) if o.stress is not None else None,
                round(to_display(o.allowable, "stress", system), 1) if o.allowable is not None else None,
-               round(o.factor, 4) if isfinite(o.factor) else None, r.required, "yes" if r.ok else "NO"]
+               round(o.factor, 4) if isfinite(o.factor) else None, r.required,
+               round(r.margin, 4) if isfinite(r.margin) else None, "yes" if r.ok else "NO"]
         ws.append(row)
         text_cell(ws.cell(ws.max_row, 1), r.item.name)
         text_cell(ws.cell(ws.max_row, 3), r.item.material.name)
