@@ -6,11 +6,14 @@ from collections import Counter
 from dataclasses import dataclass
 from math import isfinite
 
+import pandas as pd
+
 from alightsize.checks.audit import CheckRecord, audit_json, run_audit
+from alightsize.checks.sizing import Sizing, size_item
+from alightsize.landings.criteria import violation_kinds
 from alightsize.pipeline.config import DesignConfig
 from alightsize.pipeline.items import Item
-from alightsize.landings.criteria import violation_kinds
-from alightsize.checks.sizing import Sizing, size_item
+from alightsize.pipeline.plots import design_factor_figure, weight_figure
 
 SCHEMA = "alightsize.design/1"
 
@@ -69,6 +72,25 @@ class DesignResult:
     @property
     def per_leg(self) -> float:
         return sum(w.count * w.each for w in self.weights)
+
+    def to_pandas(self) -> dict[str, pd.DataFrame]:
+        """The result as tables, SI with the unit in each column name: "checks" (one row per check, with f,
+        MS and verdict), "weights" (per item) and, with landing cases, "landings" (one row per landing)."""
+        checks = pd.DataFrame([r.as_json() for r in self.records])
+        weights = pd.DataFrame([{"item": w.label, "count_per_leg": w.count, "weight_each_kg": w.each,
+                                 "weight_per_leg_kg": w.count * w.each} for w in self.weights])
+        out = {"checks": checks, "weights": weights}
+        if self.config.landings is not None:
+            out["landings"] = pd.DataFrame(self.config.landings.rows)
+        return out
+
+    def plot(self, kind: str = "factors"):
+        """A matplotlib Figure: "factors" (each item's governing design factor against the requirement) or
+        "weights" (the weight breakdown per leg)."""
+        figures = {"factors": design_factor_figure, "weights": weight_figure}
+        if kind not in figures:
+            raise ValueError(f"plot kind {kind!r}: expected one of {', '.join(figures)}")
+        return figures[kind](self)
 
 
 def criteria_counts(rows) -> str:

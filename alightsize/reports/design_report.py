@@ -19,7 +19,7 @@ from alightsize.pipeline.design import DesignResult, criteria_counts, governing_
 from alightsize.pipeline.landings import LANDING, quasi_static_load
 from alightsize.reports.loads_report import context as loads_context
 from alightsize.reports.loads_report import heatmap, write_workbook as write_loads_workbook
-from alightsize.reports.plots import design_factor_chart, weight_chart
+from alightsize.pipeline.plots import design_factor_figure, weight_figure
 from alightsize.reports.rendering import save_workbook, template_env, text_cell
 from alightsize.common.atomic import write_atomic
 
@@ -234,6 +234,10 @@ def write_workbook(res, path: Path) -> None:
     save_workbook(wb, path)
 
 
+def _png(fig, path: Path) -> None:
+    fig.savefig(path, format="png", dpi=90, metadata={"Software": None})   # no version stamp: same bytes
+
+
 def write_design(res: DesignResult, out: Path) -> list[Path]:
     """summary.json, report.html, report.md, design.xlsx and charts in `out`, each written atomically."""
     out.mkdir(parents=True, exist_ok=True)
@@ -242,8 +246,8 @@ def write_design(res: DesignResult, out: Path) -> list[Path]:
             write_atomic(out / "report.html", render_html(res)),
             write_atomic(out / "report.md", render_markdown(res)),
             write_atomic(out / "design.xlsx", lambda p: write_workbook(res, p)),
-            write_atomic(out / "design_factors.png", lambda p: design_factor_chart(res, p)),
-            write_atomic(out / "weights.png", lambda p: weight_chart(res, p))] + _loads_files(res, out)
+            write_atomic(out / "design_factors.png", lambda p: _png(design_factor_figure(res), p)),
+            write_atomic(out / "weights.png", lambda p: _png(weight_figure(res), p))] + _loads_files(res, out)
 
 
 def _loads_files(res: DesignResult, out: Path) -> list[Path]:

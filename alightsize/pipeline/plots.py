@@ -1,21 +1,16 @@
-"""Design charts: governing design factor per item against the requirement, weight breakdown."""
+"""Design charts as matplotlib Figures (no pyplot state, so they work headless and in notebooks): each item's
+governing design factor against the requirement, and the weight breakdown."""
 
 from __future__ import annotations
 
 from math import isfinite
-from pathlib import Path
 
-import matplotlib
+from matplotlib.figure import Figure
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-
-from alightsize.common.units import to_display, unit_label  # noqa: E402
-
-_META = {"Software": None}  # no version stamp: same input, same bytes
+from alightsize.common.units import to_display, unit_label
 
 
-def design_factor_chart(res, path: Path) -> None:
+def design_factor_figure(res) -> Figure:
     """Horizontal bars of each item's governing design factor, the required factor as a line."""
     rows = []
     for item in res.items:
@@ -23,7 +18,8 @@ def design_factor_chart(res, path: Path) -> None:
         if recs:
             gov = min(recs, key=lambda r: r.outcome.factor)
             rows.append((item.name, gov.outcome.factor, gov.required, gov.ok))
-    fig, ax = plt.subplots(figsize=(7, 0.35 * len(rows) + 1.2))
+    fig = Figure(figsize=(7, 0.35 * len(rows) + 1.2), layout="tight")
+    ax = fig.subplots()
     names = [r[0] for r in rows][::-1]
     vals = [r[1] for r in rows][::-1]
     colors = ["#4a7" if r[3] else "#c33" for r in rows][::-1]
@@ -36,19 +32,16 @@ def design_factor_chart(res, path: Path) -> None:
     ax.set_xlabel("governing design factor f = allowable / stress")
     ax.set_xlim(0.8, right + 0.15)
     ax.set_title(f"Configuration {res.config.configuration}: design factors (dashed: required)")
-    fig.tight_layout()
-    fig.savefig(path, format="png", dpi=90, metadata=_META)
-    plt.close(fig)
+    return fig
 
 
-def weight_chart(res, path: Path) -> None:
+def weight_figure(res) -> Figure:
     """Horizontal bars of each item's weight per leg, in the display unit."""
     system = res.config.units
     rows = sorted(res.weights, key=lambda w: w.count * w.each)
-    fig, ax = plt.subplots(figsize=(7, 0.35 * len(rows) + 1.2))
+    fig = Figure(figsize=(7, 0.35 * len(rows) + 1.2), layout="tight")
+    ax = fig.subplots()
     ax.barh([w.label for w in rows], [to_display(w.count * w.each, "mass", system) for w in rows], color="#468")
     ax.set_xlabel(f"weight per leg ({unit_label('mass', system)})")
     ax.set_title(f"Configuration {res.config.configuration}: weight breakdown")
-    fig.tight_layout()
-    fig.savefig(path, format="png", dpi=90, metadata=_META)
-    plt.close(fig)
+    return fig
