@@ -3,8 +3,8 @@
 The Python API (the CLI is a thin layer over it)::
 
     import alightsize
-    cfg = alightsize.read_design("examples/affdl-tr-66-33/telescoping.toml")
-    res = alightsize.design(cfg)                 # or alightsize.design(path)
+    lander = alightsize.read_lander("examples/lunar_lander.toml")
+    res = alightsize.design(lander)              # or alightsize.design(path), or a design config
     res.ok, res.verdict()                        # the verdict on every check and landing
     tables = res.to_pandas()                     # {"checks", "weights"[, "landings"]} DataFrames, SI
     res.plot("factors")                          # a matplotlib Figure
@@ -18,18 +18,29 @@ from pathlib import Path
 __version__ = "0.1.0"
 
 
-def read_design(path: str | Path):
-    """Read and validate a design config (TOML); bad input raises alightsize.common.errors.InputError naming
-    the file, key path, what was expected and what was found. Its landing cases, if any, run here."""
-    from alightsize.pipeline.config import read_design as _read
+def read_lander(path: str | Path):
+    """Read and validate a lander file (TOML): capsule, gravity, legs, cells, members and requirements. Bad
+    input raises alightsize.common.errors.InputError naming the file, key path, what was expected and what was
+    found. Nothing runs until `design`."""
+    from alightsize.pipeline.lander import read_lander as _read
     return _read(path)
 
 
-def design(config, out: str | Path | None = None):
-    """Run the design pipeline (sizing, checks, weights, verdict) on a config or a path to one; with `out`
-    also write the reports there. Returns a DesignResult (`.ok`, `.verdict()`, `.to_pandas()`, `.plot()`)."""
+def read_design(path: str | Path):
+    """Read and validate a design config (the App. IV item schema) or, given a lander file, its design. Nothing
+    runs until `design`."""
+    from alightsize.pipeline.lander import read_input
+    return read_input(path)
+
+
+def design(config, out: str | Path | None = None, progress: bool = False):
+    """Run the design pipeline on a lander (from `read_lander`), a design config or a path to either: App. III
+    envelopes, landing cases (stored in `out`/landings, resumable), member loads, checks and sizing, weights,
+    verdict; with `out` also write the reports there. Returns a DesignResult (`.ok`, `.verdict()`,
+    `.summary_lines()`, `.to_pandas()`, `.plot()`)."""
     from alightsize.pipeline.design import run_design
-    res = run_design(read_design(config) if isinstance(config, (str, Path)) else config)
+    spec = read_design(config) if isinstance(config, (str, Path)) else getattr(config, "spec", config)
+    res = run_design(spec, Path(out) / "landings" if out is not None else None, progress)
     if out is not None:
         write_design(res, out)
     return res

@@ -19,11 +19,13 @@ from alightsize.common.resources import data_dir
 
 def _design(args) -> int:
     from alightsize.pipeline.design import run_design
+    from alightsize.pipeline.lander import read_input
     from alightsize.reports.design_report import write_design
-    from alightsize.pipeline.config import read_design
-    res = run_design(read_design(args.config, Path(args.out) / "landings"))
+    res = run_design(read_input(args.config), Path(args.out) / "landings", progress=True)
     files = write_design(res, Path(args.out))
-    print(f"{res.config.configuration}: {res.verdict()}")
+    lines = res.summary_lines()
+    print(f"{res.config.configuration}: {lines[0]}")
+    print("\n".join("  " + line for line in lines[1:]))
     print(f"wrote {', '.join(str(f) for f in files)}")
     return 0 if res.ok else 1
 
@@ -32,8 +34,8 @@ def _audit(args) -> int:
     from alightsize.common.atomic import write_atomic
     from alightsize.checks.audit import audit_json, audit_table, failure_label, junit_xml
     from alightsize.pipeline.design import run_design
-    from alightsize.pipeline.config import read_design
-    res = run_design(read_design(args.config))
+    from alightsize.pipeline.lander import read_input
+    res = run_design(read_input(args.config))
     print(audit_table(res.records))
     print("OK" if res.checks_ok else "FAILED: " + ", ".join(failure_label(r) for r in res.records if not r.ok))
     if not res.landings_ok:                            # the audit judges design factors; say what else fails

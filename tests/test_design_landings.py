@@ -8,7 +8,7 @@ import shutil
 
 import pytest
 
-from alightsize.pipeline.config import read_design
+from alightsize.pipeline.config import prepare, read_design
 from alightsize.common.errors import InputError
 from alightsize.pipeline.landings import LANDING, quasi_static_load
 
@@ -19,7 +19,7 @@ CONFIG = EXAMPLES / "articulated_3457_envelopes.toml"
 
 @pytest.fixture(scope="module")
 def design(tmp_path_factory):
-    return read_design(CONFIG, tmp_path_factory.mktemp("landings"))
+    return prepare(read_design(CONFIG), tmp_path_factory.mktemp("landings"))
 
 
 def test_every_landing_case_runs_and_closes_energy(design):
@@ -53,7 +53,7 @@ def test_unknown_envelope_is_bad_input(tmp_path):
     bad = tmp_path / "ex" / CONFIG.name
     bad.write_text(CONFIG.read_text().replace('envelopes = ["3457"]', 'envelopes = ["3458"]'))
     with pytest.raises(InputError) as e:
-        read_design(bad, tmp_path / "o")
+        read_design(bad)
     assert "landings.envelopes" in str(e.value) and "3458" in str(e.value)
 
 

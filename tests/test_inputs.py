@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 from alightsize.common.config import Node
-from alightsize.pipeline.config import read_design
+from alightsize.pipeline.config import prepare, read_design
 from alightsize.common.errors import InputWarning
 from alightsize.model.sections import read_section
 from conftest import CONFIGS, EXAMPLES, ROOT
@@ -187,7 +187,7 @@ def test_key_paths_name_items_and_checks(tmp_path):
 
 def test_report_labels_a_checks_load_key_by_item_and_kind():
     from alightsize.reports.design_report import _reference_label
-    cfg = read_design(EXAMPLES / "articulated_3457.toml")
+    cfg = prepare(read_design(EXAMPLES / "articulated_3457.toml"))
     truss = cfg.items[0]
     assert truss.checks[1].where == 'item["Upper Truss"].check["column_buckling"]'
     assert _reference_label(cfg, truss.checks[1].where + ".load") == "Upper Truss / column buckling (load)"

@@ -11,7 +11,7 @@ import pytest
 
 from alightsize.checks.audit import run_audit
 from alightsize.pipeline.design import run_design
-from alightsize.pipeline.config import read_design
+from alightsize.pipeline.config import prepare, read_design
 from reference_data import CRITICAL, DESIGN_FACTORS, PRINTED_STRESSES, TABLES
 
 LB = 0.45359237                 # kg
@@ -39,7 +39,7 @@ HAND_FACTOR_TOL = 0.005
 
 @lru_cache(maxsize=None)
 def config(cid):
-    return read_design(EXAMPLES / f"{FILES[cid]}.toml")
+    return prepare(read_design(EXAMPLES / f"{FILES[cid]}.toml"))
 
 
 @lru_cache(maxsize=None)

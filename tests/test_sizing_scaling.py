@@ -5,7 +5,7 @@ from math import pi
 import pytest
 
 from alightsize.pipeline.design import run_design
-from alightsize.pipeline.config import read_design
+from alightsize.pipeline.config import prepare, read_design
 from alightsize.weights.scaling import (cushioning_weight_fraction, impact_energy_per_weight, scale_tree, table27)
 from alightsize.common.units import parse
 from conftest import ROOT
@@ -16,7 +16,7 @@ SIZED = ROOT / "examples" / "sizing" / "articulated_3457_sized.toml"
 def test_sized_members_sit_in_the_required_band():
     res = run_design(read_design(SIZED))
     assert res.ok and len(res.sizings) == 5
-    items = {i.name: i for i in read_design(SIZED).items}
+    items = {i.name: i for i in prepare(read_design(SIZED)).items}
     for s in res.sizings:
         assert s.feasible
         spec = items[s.item].size

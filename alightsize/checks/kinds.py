@@ -44,6 +44,11 @@ class Check:
     def evaluate(self, section: Section, material: Material) -> Outcome:
         return KINDS[self.kind][1](self.params, section, material)
 
+    def needs(self) -> tuple[str, ...]:
+        """The material properties this check's formulas use."""
+        extra = {"johnson_euler": ("yield_strength",), "sp8007": ("poisson_m",)}.get(self.params.get("formula"), ())
+        return KINDS[self.kind][2] + extra
+
 
 def _p(node: Node, name: str, dim: str) -> float | None:
     """An optional quantity: None when the key is absent (the section's value is used)."""
@@ -70,7 +75,9 @@ def _read_axial_and_moment(node: Node) -> dict:
 
 
 def _read_buckling(node: Node) -> dict:
-    return {**_read_load(node), "L": node.quantity("length", "length")}
+    """`formula`: "euler" (App. IV) or "johnson_euler" (Johnson's parabola below the transition slenderness)."""
+    return {**_read_load(node), "L": node.quantity("length", "length"),
+            "formula": node.string("formula", "euler", choices=("euler", "johnson_euler"))}
 
 
 def _read_local(node: Node) -> dict:
@@ -78,12 +85,19 @@ def _read_local(node: Node) -> dict:
     if node.has("moment") or node.has("moment_force"):
         out.update(_read_moment(node))
     out["t"] = _p(node, "wall", "length")
+    out["formula"] = node.string("formula", "app_iv", choices=("app_iv", "sp8007"))   # 0.4 E t / D, or SP-8007
     return out
 
 
 def _read_bearing(node: Node) -> dict:
     return {"P": sum(node.parse_quantity("loads", v, "force") for v in _list(node, "loads")),
-            "d": node.quantity("diameter", "length"), "t": node.quantity("bearing_length", "length")}
+            "d": _p(node, "diameter", "length"), "t": node.quantity("bearing_length", "length")}
+
+
+def _read_double_shear(node: Node) -> dict:
+    comps = [node.parse_quantity("loads", v, "force", positive=False) for v in _list(node, "loads")]
+    return {"components": tuple(comps), "d": _p(node, "diameter", "length"),
+            "planes": node.integer("planes", 2, minimum=1)}
 
 
 def _read_pin(node: Node) -> dict:
@@ -99,9 +113,16 @@ def _read_cone(node: Node) -> dict:
     return {"P": node.quantity("load", "force"), "t": node.quantity("thickness", "length")}
 
 
+def _read_theory(node: Node) -> dict:
+    """`theory`: "app_iv" ((sigma_r + sigma_t)/2 against Fcy/2), "tresca" or "von_mises" (principal stresses,
+    sigma_z = 0, against Fcy); `equivalent_radius`: Roark's r0' for a load circle r0 < 0.5 t."""
+    return {"theory": node.string("theory", "app_iv", choices=("app_iv", "tresca", "von_mises")),
+            "r0_equivalent": node.boolean("equivalent_radius", False)}
+
+
 def _read_plate(node: Node) -> dict:
     return {"W": node.quantity("load", "force"), "r0": node.quantity("load_radius", "length"),
-            "a": _p(node, "radius", "length"), "t": _p(node, "thickness", "length")}
+            "a": _p(node, "radius", "length"), "t": _p(node, "thickness", "length"), **_read_theory(node)}
 
 
 def _read_plate_moment(node: Node) -> dict:
@@ -117,7 +138,7 @@ def _read_eccentric(node: Node) -> dict:
     return {"W": node.quantity("load", "force"), "W_total": node.quantity("distributed_load", "force"),
             "p": node.quantity("load_offset", "length"), "r0": node.quantity("load_radius", "length"),
             "a": _p(node, "radius", "length"), "a_t": _p(node, "radius_tangential", "length"),
-            "t": _p(node, "thickness", "length")}
+            "t": _p(node, "thickness", "length"), **_read_theory(node)}
 
 
 def _list(node: Node, name: str) -> list:
@@ -189,10 +210,24 @@ def _column(p, s, mat) -> Outcome:
     k = sqrt(i / a)
     direct = _direct_step(p["P"], a)
     sig = direct.value
+    gyration = Step("Radius of gyration", "k", "√({I} / {A})", (("I", i, "second_moment"), ("A", a, "area")), k, "length")
+    if p["formula"] == "johnson_euler":
+        fy, lk = mat.yield_strength, p["L"] / k
+        crit, which = stress.column_stress(e, fy, lk)
+        ek = (("E", e, "stress"), ("Fcy", fy, "stress"))
+        steps = (direct, gyration,
+                 Step("Slenderness", "L/k", "{L} / {k}", (("L", p["L"], "length"), ("k", k, "length")), lk, "dimensionless"),
+                 Step("Transition slenderness (Bruhn 1973 C2.4)", "(L/k)T", "π √(2 {E} / {Fcy})", ek,
+                      stress.transition_slenderness(e, fy), "dimensionless"),
+                 Step("Critical column stress, Johnson parabola (L/k below the transition)", "σcr",
+                      "{Fcy} - ({Fcy} / 2π)² ({L/k})² / {E}", ek + (("L/k", lk, "dimensionless"),), crit, "stress")
+                 if which == "johnson" else
+                 Step("Critical column stress, Euler (L/k at or above the transition)", "σcr", "π² {E} / {L/k}²",
+                      (("E", e, "stress"), ("L/k", lk, "dimensionless")), crit, "stress"))
+        return Outcome("column_buckling", p["P"], sig, crit, stress.design_factor(crit, sig), steps)
     crit = stress.euler_stress(e, p["L"], k)
     pcr = stress.euler_load(e, i, p["L"])
-    steps = (direct,
-             Step("Radius of gyration", "k", "√({I} / {A})", (("I", i, "second_moment"), ("A", a, "area")), k, "length"),
+    steps = (direct, gyration,
              Step("Critical column stress", "σcB", "π² {E} / ({L} / {k})²",
                   (("E", e, "stress"), ("L", p["L"], "length"), ("k", k, "length")), crit, "stress"),
              Step("Critical column load", "Pcr", "π² {E} {I} / {L}²",
@@ -208,17 +243,28 @@ def _local(p, s, mat) -> Outcome:
     else:
         steps = [_direct_step(p["P"], s.area())]
         applied = steps[0].value
-    crit = stress.local_buckling_stress(e, t, d)
-    steps.append(Step("Local buckling stress", "σLB", "0.4 {E} {t} / {D}",
-                      (("E", e, "stress"), ("t", t, "length"), ("D", d, "length")), crit, "stress"))
+    if p["formula"] == "sp8007":
+        r, nu = (d - t) / 2, 1 / mat.poisson_m
+        gamma = stress.thin_wall_knockdown(r / t)
+        crit = gamma * stress.classical_cylinder_stress(e, t, r, nu)
+        steps.append(Step("Thin-wall knockdown (NASA SP-8007 eq. 4)", "γ", "1 - 0.901 (1 - exp(-√({r} / {t}) / 16))",
+                          (("r", r, "length"), ("t", t, "length")), gamma, "dimensionless"))
+        steps.append(Step("Local buckling stress (Timoshenko & Gere eq. 11-13 with γ)", "σLB",
+                          "{γ} {E} {t} / ({r} √(3 (1 - {ν}²)))", (("γ", gamma, "dimensionless"), ("E", e, "stress"),
+                          ("t", t, "length"), ("r", r, "length"), ("ν", nu, "dimensionless")), crit, "stress"))
+    else:
+        crit = stress.local_buckling_stress(e, t, d)
+        steps.append(Step("Local buckling stress", "σLB", "0.4 {E} {t} / {D}",
+                          (("E", e, "stress"), ("t", t, "length"), ("D", d, "length")), crit, "stress"))
     return Outcome("local_buckling", p["P"], applied, crit, stress.design_factor(crit, applied), tuple(steps))
 
 
 def _bearing(p, s, mat) -> Outcome:
-    sig = stress.bearing_stress(p["P"], p["d"], p["t"])
+    d = p["d"] or s.dims["diameter"]                 # the pin's diameter, else the rod section's
+    sig = stress.bearing_stress(p["P"], d, p["t"])
     fy = mat.yield_strength
     steps = (Step("Bearing stress", "σBR", "{P} / ({d} {t})",
-                  (("P", p["P"], "force"), ("d", p["d"], "length"), ("t", p["t"], "length")), sig, "stress"),)
+                  (("P", p["P"], "force"), ("d", d, "length"), ("t", p["t"], "length")), sig, "stress"),)
     return Outcome("bearing", p["P"], sig, fy, stress.design_factor(fy, sig), steps)
 
 
@@ -231,6 +277,21 @@ def _pin(p, s, mat) -> Outcome:
              Step("Double-shear allowable load", "Pallow", "{Pallow}", (("Pallow", p["allowable_load"], "force"),),
                   p["allowable_load"], "force"))
     return Outcome("shear", load, None, None, stress.design_factor(p["allowable_load"], load), steps)
+
+
+def _double_shear(p, s, mat) -> Outcome:
+    comps = p["components"]
+    load = stress.resultant(*comps)
+    names = tuple((f"P{j + 1}", v, "force") for j, v in enumerate(comps))
+    d = p["d"] or s.dims["diameter"]                 # the pin's own diameter, else the rod section's
+    tau = stress.pin_shear_stress(load, d, p["planes"])
+    allow = stress.shear_allowable(mat.yield_strength)
+    steps = (Step("Resultant pin load", "P", "√(" + " + ".join(f"{{{n}}}²" for n, _, _ in names) + ")", names, load, "force"),
+             Step("Pin shear stress (Bruhn 1973 D1.4)", "τ", "{P} / ({n} π {d}² / 4)",
+                  (("P", load, "force"), ("n", p["planes"], "dimensionless"), ("d", d, "length")), tau, "stress"),
+             Step("Shear allowable (maximum shear)", "τallow", "{Fcy} / 2", (("Fcy", mat.yield_strength, "stress"),),
+                  allow, "stress"))
+    return Outcome("shear", load, tau, allow, stress.design_factor(allow, tau), steps)
 
 
 def _ring(p, s, mat) -> Outcome:
@@ -259,7 +320,18 @@ def _plate_geometry(p, s: Section) -> tuple[float, float]:
     return a, t
 
 
-def _shear_outcome(sr: float, st: float, load: float, mat: Material, steps: list[Step]) -> Outcome:
+def _shear_outcome(sr: float, st: float, load: float, mat: Material, steps: list[Step], theory: str = "app_iv") -> Outcome:
+    """App. IV's (sigma_r + sigma_t)/2 against Fcy/2, or an equivalent stress of the principal stresses
+    (sigma_z = 0) against Fcy: Tresca or von Mises."""
+    if theory != "app_iv":
+        fn, name = (stress.tresca_stress, "Tresca") if theory == "tresca" else (stress.von_mises_stress, "von Mises")
+        eq = fn(sr, st, 0.0)
+        formula = ("max(|{σr} - {σt}|, |{σt}|, |{σr}|)" if theory == "tresca"
+                   else "√(({σr} - {σt})² + {σt}² + {σr}²) / √2")
+        steps.append(Step(f"Equivalent stress ({name}, principal stresses, σz = 0)", "σeq", formula,
+                          (("σr", sr, "stress"), ("σt", st, "stress")), eq, "stress"))
+        fy = mat.yield_strength
+        return Outcome("plate_bending", load, eq, fy, stress.design_factor(fy, eq), tuple(steps))
     tau = stress.report_max_shear(sr, st)
     allow = stress.shear_allowable(mat.yield_strength)
     steps.append(Step("Maximum shear stress", "τmax", "({σr} + {σt}) / 2",
@@ -272,13 +344,24 @@ _FIXED = "3 {W} ({m}+1) / (2π {m} {t}²) [ln({a}/{r0}) + {r0}²/(4 {a}²)]"
 _SUPPORTED = "3 {W} / (2π {m} {t}²) [{m} + ({m}+1) ln({a}/{r0}) - ({m}-1) {r0}²/(4 {a}²)]"
 
 
+def _load_radius(p, t: float) -> tuple[float, list[Step]]:
+    """r0, or Roark's equivalent r0' when asked for and r0 < 0.5 t (with the step that says so)."""
+    r0 = p["r0"]
+    if not p.get("r0_equivalent") or r0 >= 0.5 * t:
+        return r0, []
+    r = plates.equivalent_radius(r0, t)
+    return r, [Step("Equivalent load radius (Roark 1954 p. 194: r0 < 0.5 t)", "r0'", "√(1.6 {r0}² + {t}²) - 0.675 {t}",
+                    (("r0", r0, "length"), ("t", t, "length")), r, "length")]
+
+
 def _plate_common(p, s, mat, fn, label, ref, formula) -> Outcome:
     a, t = _plate_geometry(p, s)
-    sr, st = fn(p["W"], t, a, p["r0"], mat.poisson_m)
-    steps = [Step(f"{label} ({ref})", "σr = σt", formula,
-                  (("W", p["W"], "force"), ("t", t, "length"), ("a", a, "length"), ("r0", p["r0"], "length"),
-                   ("m", mat.poisson_m, "dimensionless")), st, "stress")]
-    return _shear_outcome(sr, st, p["W"], mat, steps)
+    r0, steps = _load_radius(p, t)
+    sr, st = fn(p["W"], t, a, r0, mat.poisson_m)
+    steps.append(Step(f"{label} ({ref})", "σr = σt", formula,
+                      (("W", p["W"], "force"), ("t", t, "length"), ("a", a, "length"), ("r0", r0, "length"),
+                       ("m", mat.poisson_m, "dimensionless")), st, "stress"))
+    return _shear_outcome(sr, st, p["W"], mat, steps, p["theory"])
 
 
 def _plate_fixed(p, s, mat) -> Outcome:
@@ -303,7 +386,7 @@ def _plate_moment(p, s, mat) -> Outcome:
                    (("W", p["W"], "force"), ("t", t, "length"), ("a", a, "length"), ("r0", p["r0"], "length"),
                     ("m", mat.poisson_m, "dimensionless")), sw, "stress")]
     total = sm + sw
-    return _shear_outcome(total, total, p["W"], mat, steps)
+    return _shear_outcome(total, total, p["W"], mat, steps, p["theory"])
 
 
 def _plate_annular(p, s, mat) -> Outcome:
@@ -329,7 +412,7 @@ def _plate_eccentric(p, s, mat) -> Outcome:
                   ecc + " + 3 {W'} / (8π m {t}²) (3m+1)(1 - {p}²/{a}²)", ins, sr, "stress"),
              Step("Tangential stress, eccentric + distributed load (Roark 1954 p. 194-195)", "σt",
                   ecc + " + 3 {W'} / (8π m {t}²) [(3m+1) - (m+3) {p}²/a²]", ins, st, "stress")]
-    return _shear_outcome(sr, st, p["W"], mat, steps)
+    return _shear_outcome(sr, st, p["W"], mat, steps, p["theory"])
 
 
 # kind -> (reader of config parameters, evaluator, material properties it needs)
@@ -342,6 +425,7 @@ KINDS: dict[str, tuple[Callable[[Node], dict], Callable[[dict, Section, Material
     "local_buckling": (_read_local, _local, ("elastic_modulus",)),
     "bearing": (_read_bearing, _bearing, ("yield_strength",)),
     "pin_shear": (_read_pin, _pin, ()),
+    "pin_double_shear": (_read_double_shear, _double_shear, ("yield_strength",)),
     "ring_bending": (_read_ring, _ring, ("yield_strength",)),
     "cone_tension": (_read_cone, _cone, ("yield_strength",)),
     "plate_fixed_center_load": (_read_plate, _plate_fixed, ("yield_strength", "poisson_m")),
@@ -355,6 +439,8 @@ KINDS: dict[str, tuple[Callable[[Node], dict], Callable[[dict, Section, Material
 _PLATE = {"radius": "diameter", "thickness": "thickness"}
 # kind -> {config key: the section dimension its value replaces when given}
 STANDS_IN: dict[str, dict[str, str]] = {
+    "pin_double_shear": {"diameter": "diameter"},
+    "bearing": {"diameter": "diameter"},
     "local_buckling": {"wall": "wall"},
     "plate_fixed_center_load": _PLATE,
     "plate_supported_center_load": _PLATE,

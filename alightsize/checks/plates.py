@@ -6,7 +6,7 @@ maximum radial and tangential stresses (sigma_r, sigma_t) in Pa at the point the
 
 from __future__ import annotations
 
-from math import log, pi
+from math import log, pi, sqrt
 
 
 def fixed_center_load(w: float, t: float, a: float, r0: float, m: float) -> tuple[float, float]:
@@ -58,3 +58,9 @@ def supported_eccentric_and_distributed(w: float, w_total: float, t: float, a: f
     sigma_r = ecc + dist * (3 * m + 1) * (1 - p * p / (a * a))
     sigma_t = ecc + dist * ((3 * m + 1) - (m + 3) * p * p / (a_t * a_t))
     return sigma_r, sigma_t
+
+
+def equivalent_radius(r0: float, t: float) -> float:
+    """Roark's equivalent radius of a load on a small circle: r0' = sqrt(1.6 r0^2 + t^2) - 0.675 t when
+    r0 < 0.5 t, else r0 (Roark 1954 p. 194; Young & Budynas 2002 §11.2)."""
+    return sqrt(1.6 * r0 * r0 + t * t) - 0.675 * t if r0 < 0.5 * t else r0

@@ -103,10 +103,11 @@ def _telescoping(node: Node) -> TelescopingLeg:
     return leg
 
 
-def read_loads(path: str | Path) -> LoadsConfig:
-    """Read and validate a loads config; problems are InputErrors naming file and key path."""
+def read_loads(path: str | Path, root: Node | None = None) -> LoadsConfig:
+    """Read and validate a loads config (or the tables `root` holds, e.g. derived from a lander file);
+    problems are InputErrors naming file and key path."""
     path = Path(path)
-    root = load_toml(path)
+    root = load_toml(path) if root is None else root
     root.allow(("loads", "report", "geometry", "truss", "grid", "configuration", "combined", "telescoping"))
     head = root.table("loads", optional=True)
     title = head.string("title", path.stem) if head else path.stem

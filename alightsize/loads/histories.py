@@ -22,13 +22,14 @@ gives exactly the simulated ground force (the ground force is linear in AF2), i.
 lumped with the lower cell. Off the seat that AF2 equals the history's. The member loads therefore balance
 the simulated ground force at every step.
 
-Telescoping legs are not covered: their App. III free body (`telescoping_loads`) is a single worst case
-(two adjacent pads crushing at once), not a function of a leg position.
+Telescoping legs: the App. III free-body forces (AF1, P1-P4) at every step from the history's axial cell
+force and ground force (`telescoping_member_histories`), beside the single quasi-static worst case of
+alightsize.loads.telescoping.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from math import degrees
 
 import numpy as np
@@ -39,7 +40,10 @@ from alightsize_sim.articulated_statics import MEMBERS, Reactions, TrussAngles, 
 from alightsize_sim.landing import Result, Scene
 from alightsize_sim.legs import initial_shape, leg_force, lift_shape, pack
 from alightsize_sim.rigid_body import quat_matrix
+from alightsize_sim.telescoping_leg import TelescopingLeg as SimTelescopingLeg
 
+from alightsize.loads.quasi_static import TELESCOPING_FORCES
+from alightsize.loads.telescoping import TelescopingLeg as TelescopingFreeBody, sliding_loads
 from alightsize.model.scene_config import SceneConfig
 
 SHAPE_TOL = 1e-9        # m: largest difference between the recovered and the recorded cell deflections
@@ -124,12 +128,20 @@ def member_histories(cfg: SceneConfig, res: Result, truss: TrussAngles) -> dict[
     return _members(leg_histories(cfg.scene, res), res.contact.shape, truss)
 
 
-def _at(res: Result, hist: dict[int, LegHistory], field: np.ndarray, pick) -> tuple[float, dict]:
-    k, i = np.unravel_index(int(pick(field)), field.shape)
-    h = hist[int(i)]
-    j = int(np.searchsorted(h.steps, k))
-    return float(field[k, i]), {"t_s": float(res.t[k]), "leg": int(i) + 1, "alpha_deg": degrees(h.alpha[j]),
-                                "beta_deg": degrees(h.beta[j]), "psi_deg": degrees(h.psi[j])}
+def _extremes(fields: dict[str, np.ndarray], where) -> list[dict]:
+    """Per field the largest positive (tension) and negative (compression) value over (steps, legs) with
+    `where(step, leg)`; None where a field never has that sign. Ties go to the earliest step, then leg."""
+    rows = []
+    for m, f in fields.items():
+        row = {"member": m}
+        for key, pick, sign in (("tension", np.nanargmax, 1.0), ("compression", np.nanargmin, -1.0)):
+            if (np.isfinite(f) & (sign * f > 0)).any():
+                k, i = np.unravel_index(int(pick(f)), f.shape)
+                row[f"{key}_N"], row[f"{key}_at"] = float(f[k, i]), where(int(k), int(i))
+            else:
+                row[f"{key}_N"], row[f"{key}_at"] = None, None
+        rows.append(row)
+    return rows
 
 
 def dynamic_envelope(cfg: SceneConfig, res: Result, truss: TrussAngles) -> list[dict]:
@@ -137,14 +149,49 @@ def dynamic_envelope(cfg: SceneConfig, res: Result, truss: TrussAngles) -> list[
     {member, tension_N, tension_at: {t_s, leg (1..), alpha_deg, beta_deg, psi_deg}, compression_N,
     compression_at}, None where the member never sees that sense. Ties go to the earliest step, then leg."""
     hist = leg_histories(cfg.scene, res)
-    fields = _members(hist, res.contact.shape, truss)
     by_leg = {h.leg: h for h in hist}
-    rows = []
-    for m, f in fields.items():
-        row = {"member": m}
-        for key, pick, sign in (("tension", np.nanargmax, 1.0), ("compression", np.nanargmin, -1.0)):
-            hit = np.isfinite(f) & (sign * f > 0)
-            value, at = _at(res, by_leg, f, pick) if hit.any() else (None, None)
-            row[f"{key}_N"], row[f"{key}_at"] = value, at
-        rows.append(row)
-    return rows
+
+    def where(k: int, i: int) -> dict:
+        h = by_leg[i]
+        j = int(np.searchsorted(h.steps, k))
+        return {"t_s": float(res.t[k]), "leg": i + 1, "alpha_deg": degrees(h.alpha[j]),
+                "beta_deg": degrees(h.beta[j]), "psi_deg": degrees(h.psi[j])}
+    return _extremes(_members(hist, res.contact.shape, truss), where)
+
+
+def telescoping_member_histories(cfg: SceneConfig, res: Result, leg: TelescopingFreeBody) -> dict[str, np.ndarray]:
+    """The App. III free-body forces along the history, (n_steps, n_legs) N, NaN off the ground: AF1 (the axial
+    cell), P1 (the ground force across the leg axis at the footpad, |X - (X.u) u|: the pads' generalized forces
+    over the current length al, eq. 25-27), P2 = P1 (al / a - 1) (the pads' resultant P1 al / a less P1, from
+    the moments about the pivot; App. III with al = rho), and w1, w2, P4, P3 of `sliding_loads` with the step's
+    AF1 and al. Bearing length and friction are the App. III leg's (`leg`)."""
+    legs = cfg.scene.legs
+    if not all(isinstance(lg, SimTelescopingLeg) for lg in legs):
+        raise ValueError("telescoping member loads need telescoping legs")
+    shape = res.contact.shape
+    out = {m: np.full(shape, np.nan) for m in TELESCOPING_FORCES}
+    R = np.array([quat_matrix(q / np.linalg.norm(q)) for q in res.y[:, 6:10]])
+    for i, lg in enumerate(legs):
+        k = np.flatnonzero(res.contact[:, i])
+        attach = res.y[k, 0:3] + np.einsum("kij,j->ki", R[k], lg.attach)
+        d = np.einsum("kji,kj->ki", R[k], res.footpad[k, i] - attach)          # pivot to footpad, body axes
+        al = np.linalg.norm(d, axis=1)
+        u = d / al[:, None]
+        X = res.leg_force[k, i]
+        p1 = np.linalg.norm(X - np.einsum("ki,ki->k", X, u)[:, None] * u, axis=1)
+        af1 = res.forces[k, i, 0]
+        slide = sliding_loads(replace(leg, axial_crush=af1, length=al), p1)
+        for m, v in (("AF1", af1), ("P1", p1), ("P2", p1 * (al / lg.pad_lever - 1.0)), ("P3", slide["P3"]),
+                     ("P4", slide["P4"])):
+            out[m][k, i] = v
+    return out
+
+
+def telescoping_dynamic_envelope(cfg: SceneConfig, res: Result, leg: TelescopingFreeBody) -> list[dict]:
+    """Per App. III force its largest value over the history (`dynamic_envelope`'s format, `at` with psi 0)."""
+    shapes = leg_shapes(cfg.scene, res)
+
+    def where(k: int, i: int) -> dict:
+        a, b, _ = shapes[k, i]
+        return {"t_s": float(res.t[k]), "leg": i + 1, "alpha_deg": degrees(a), "beta_deg": degrees(b), "psi_deg": 0.0}
+    return _extremes(telescoping_member_histories(cfg, res, leg), where)

@@ -16,7 +16,7 @@ from alightsize.loads.telescoping import free_body
 
 SCHEMA = "alightsize.loads/1"
 TELESCOPING = "telescoping"
-TELESCOPING_FORCES = ("P1", "P2", "P3", "P4")
+TELESCOPING_FORCES = ("AF1", "P1", "P2", "P3", "P4")
 SENSES = ("tension", "compression", "magnitude")
 
 
@@ -24,7 +24,8 @@ SENSES = ("tension", "compression", "magnitude")
 class LoadsResult:
     config: LoadsConfig
     envelopes: dict[str, tuple[MemberEnvelope, ...]]     # configurations in file order, then combinations
-    telescoping: dict[str, float] | None                 # App. III free body, SI
+    telescoping: dict[str, float] | None                 # App. III free body (AF1 and P1-P4, w1, w2), SI
+    telescoping_from: dict[str, Extreme] | None = None   # free-body forces a landing exceeded, and where
 
     @property
     def combined(self) -> dict[str, tuple[str, ...]]:
@@ -41,7 +42,7 @@ def run_loads(cfg: LoadsConfig) -> LoadsResult:
                              "over the whole grid", str(exc)) from None
     for name, members in cfg.combined:
         env[name] = combine([env[m] for m in members])
-    tele = free_body(cfg.telescoping) if cfg.telescoping else None
+    tele = {"AF1": cfg.telescoping.axial_crush, **free_body(cfg.telescoping)} if cfg.telescoping else None
     return LoadsResult(cfg, env, tele)
 
 
@@ -68,6 +69,10 @@ def loads_json(res: LoadsResult) -> dict:
     return out
 
 
+class Unloaded(Exception):
+    """An optional force reference to a member not loaded in that sense: the check that reads it is dropped."""
+
+
 @dataclass(frozen=True)
 class LoadReference:
     """A design check load taken from an envelope: where it is used and what it resolved to."""
@@ -90,32 +95,58 @@ def pick(res: LoadsResult, env: str, member: str, sense: str) -> Extreme | None:
     return max(cands, key=lambda e: abs(e.value)) if cands else None
 
 
-def _resolve(res: LoadsResult, node: Node, name: str, ref: dict) -> float:
+def _reference(node: Node, name: str, ref: dict, envelopes: tuple[str, ...],
+               telescoping: bool) -> tuple[Node, str, str, str, float]:
+    """A force reference {envelope, member, sense, factor, optional} read and checked against the envelope
+    names (optional = true: a member not loaded in that sense drops the check, see `Unloaded`)."""
     sub = Node(node.file, node.key(name), ref, node.context)
-    sub.allow(("envelope", "member", "sense", "factor"))
+    sub.allow(("envelope", "member", "sense", "factor", "optional"))
+    sub.boolean("optional", False)
     env = sub.string("envelope")
     member = sub.string("member")
     sense = sub.string("sense", "magnitude", choices=SENSES)
     factor = sub.number("factor", 1.0)
     sub.finish()
     if env == TELESCOPING:
-        if res.telescoping is None:
+        if not telescoping:
             raise sub.error("envelope", "a loads file with a [telescoping] table", "none")
         if member not in TELESCOPING_FORCES:
             raise sub.error("member", "one of " + ", ".join(TELESCOPING_FORCES), repr(member))
-        value, extreme = abs(res.telescoping[member]) * factor, None
     else:
-        if env not in res.envelopes:
-            raise sub.error("envelope", "one of " + ", ".join(repr(k) for k in [*res.envelopes, TELESCOPING]), repr(env))
+        if env not in envelopes:
+            raise sub.error("envelope", "one of " + ", ".join(repr(k) for k in [*envelopes, TELESCOPING]), repr(env))
         if member not in MEMBERS:
             raise sub.error("member", "one of " + ", ".join(MEMBERS), repr(member))
+    return sub, env, member, sense, factor
+
+
+def _resolve(res: LoadsResult, node: Node, name: str, ref: dict) -> float:
+    sub, env, member, sense, factor = _reference(node, name, ref, tuple(res.envelopes), res.telescoping is not None)
+    if env == TELESCOPING:
+        value, extreme = abs(res.telescoping[member]) * factor, (res.telescoping_from or {}).get(member)
+    else:
         extreme = pick(res, env, member, sense)
+        if extreme is None and ref.get("optional"):
+            raise Unloaded(node.key(name))
         if extreme is None:
             raise sub.error("sense", f"a sense in which {member} is loaded in envelope {env!r}", repr(sense))
         value = abs(extreme.value) * factor
     node.context.setdefault("load_references", []).append(
         LoadReference(node.key(name), env, member, sense, factor, value, extreme))
     return value
+
+
+def validate_references(node: Node, cfg: LoadsConfig | None) -> None:
+    """Let force references under `node` be checked against `cfg`'s envelope names before any envelope is
+    computed (each stands for 1 N meanwhile); without a loads config a reference is an input error."""
+    def check(n: Node, name: str, ref: dict) -> float:
+        if cfg is None:
+            raise n.error(name, "a force with units, or an envelope reference with [loads] file = ... in the "
+                          "design config", "an envelope reference but no [loads] file")
+        _reference(n, name, ref, tuple(c.name for c in cfg.cases) + tuple(c[0] for c in cfg.combined),
+                   cfg.telescoping is not None)
+        return 1.0
+    node.context["force_reference"] = check
 
 
 def attach(node: Node, res: LoadsResult) -> None:

@@ -187,9 +187,35 @@ def _merge(base: dict, over: dict) -> dict:
     return out
 
 
+# tables of a lander file (alightsize.pipeline.lander) that do not describe the landing itself
+LANDER_ONLY = ("lander", "structure", "members", "item", "requirements", "report")
+
+
+def _upper(value):
+    """The larger end of a requirement written as a value or a [low, high] range (as written)."""
+    return value[-1] if isinstance(value, list) and value else value
+
+
+def lander_scene(root: Node) -> Node:
+    """A lander file read as its nominal landing: the scene tables, [lander] name, title and gravity as its
+    [scene], and, without an [initial] table, the envelope's largest vertical and horizontal speeds."""
+    head = root.data["lander"] if isinstance(root.data["lander"], dict) else {}
+    data = {k: v for k, v in root.data.items() if k not in LANDER_ONLY}
+    data["scene"] = {k: head[k] for k in ("name", "title", "gravity") if k in head}
+    req = root.data.get("requirements")
+    env = req.get("envelope") if isinstance(req, dict) else None
+    if "initial" not in data and isinstance(env, dict) and isinstance(_upper(env.get("vertical_speed")), str):
+        h = _upper(env.get("horizontal_speed", "0 m/s"))
+        data["initial"] = {"velocity": ["0 m/s", h, "-" + _upper(env["vertical_speed"]).strip()]}
+    return Node(root.file, "", data)
+
+
 def load_scene_toml(path: Path, depth: int = 0) -> Node:
-    """The scene TOML with its `scene.base` chain (a scene it varies, path relative to it) merged under it."""
+    """The scene TOML with its `scene.base` chain (a scene it varies, path relative to it) merged under it;
+    a lander file gives its nominal landing (`lander_scene`)."""
     root = load_toml(path)
+    if "lander" in root.data:
+        return lander_scene(root)
     head = root.data.get("scene")
     if not (isinstance(head, dict) and "base" in head):
         return root
@@ -199,8 +225,10 @@ def load_scene_toml(path: Path, depth: int = 0) -> Node:
         raise root.error("scene.base", "the path of a scene TOML (relative to this one)", repr(base))
     if depth >= MAX_BASES:
         raise root.error("scene.base", f"at most {MAX_BASES} nested bases", "a longer chain (a cycle?)")
-    data = _merge(load_scene_toml(base_path, depth + 1).data, root.data)
-    data["scene"] = {k: v for k, v in head.items() if k != "base"}    # name and title are not inherited
+    base_data = load_scene_toml(base_path, depth + 1).data
+    data = _merge(base_data, root.data)
+    inherited = {k: v for k, v in (base_data.get("scene") or {}).items() if k == "gravity"}
+    data["scene"] = inherited | {k: v for k, v in head.items() if k != "base"}   # name and title are not inherited
     return Node(path, "", data)
 
 

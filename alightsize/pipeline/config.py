@@ -1,21 +1,46 @@
-"""A design config: the items of one leg configuration, the capsule, the audit rule and the display units."""
+"""Design inputs: what a design config or a lander file says (`DesignSpec`, read and validated, nothing run),
+and the prepared design (`DesignConfig`: envelopes computed, landings run, every check's load resolved)."""
 
 from __future__ import annotations
 
+import copy
 from dataclasses import dataclass
 from pathlib import Path
 
 from alightsize.common.config import Node, load_toml
+from alightsize.loads.config import LoadsConfig, read_loads
+from alightsize.loads.quasi_static import LoadReference, LoadsResult, attach, run_loads, validate_references
+from alightsize.model.materials import Material, library
 from alightsize.pipeline.items import Item, read_item
-from alightsize.pipeline.landings import Landings, run_landings
-from alightsize.loads.quasi_static import LoadReference, LoadsResult, attach, load_from
-from alightsize.model.materials import library
+from alightsize.pipeline.landings import Landings, LandingSpec, read_landing_spec, run_landings
 
 UNIT_SYSTEMS = ("US", "SI")
 
 
 @dataclass(frozen=True)
+class DesignSpec:
+    """A design as read: the items as TOML tables (their loads may reference envelopes not yet computed),
+    the quasi-static loads to compute and the landing cases to run."""
+
+    path: Path
+    configuration: str
+    title: str
+    capsule_mass: float | None
+    legs: int
+    units: str
+    required: float
+    decimals: int | None
+    materials: dict[str, Material]
+    items: tuple[Node, ...]
+    loads: LoadsConfig | None = None
+    landings: LandingSpec | None = None
+    weight_goal: float | None = None          # leg-system weight as a fraction of the capsule
+
+
+@dataclass(frozen=True)
 class DesignConfig:
+    """A prepared design: items with resolved loads, the envelopes and the landings they came from."""
+
     path: Path
     configuration: str
     title: str
@@ -28,30 +53,22 @@ class DesignConfig:
     loads: LoadsResult | None = None
     load_refs: tuple[LoadReference, ...] = ()
     landings: Landings | None = None
+    weight_goal: float | None = None
 
 
-def _loads(root: Node, path: Path) -> LoadsResult | None:
-    """[loads] file = "...": envelopes computed now, so checks can reference them (App. III -> App. IV)."""
-    node = root.table("loads", optional=True)
-    if node is None:
-        def refuse(n: Node, name: str, ref: dict) -> float:
-            raise n.error(name, "a force with units, or an envelope reference with [loads] file = ... in the design "
-                          "config", "an envelope reference but no [loads] file")
-        root.context["force_reference"] = refuse
-        return None
-    file = path.parent / node.string("file")
-    node.finish()
-    if not file.exists():
-        raise node.error("file", "the path of an existing loads config", str(file))
-    res = load_from(file)
-    attach(root, res)
-    return res
+def read_items(nodes: tuple[Node, ...], mats: dict[str, Material], required: float, root: Node) -> tuple[Item, ...]:
+    """Read item tables (copies: a node can be read again once loads are known); names unique."""
+    items = tuple(read_item(Node(n.file, n.path, copy.deepcopy(n.data), root.context), mats, required) for n in nodes)
+    names = [i.name for i in items]
+    dup = next((n for n in names if names.count(n) > 1), None)
+    if dup:
+        raise root.error("item", "item names unique within a configuration", f"{dup!r} twice")
+    return items
 
 
-def read_design(path: str | Path, landings_dir: Path | None = None) -> DesignConfig:
-    """Read and validate a design config; any problem is an InputError naming file and key path. Landing
-    cases (`[landings]`) run before the checks read their loads, into `landings_dir` (resumable) or a
-    temporary folder."""
+def read_design(path: str | Path) -> DesignSpec:
+    """Read and validate a design config; any problem is an InputError naming file and key path. Nothing is
+    computed: the envelopes and landing cases it names run in `prepare`."""
     path = Path(path)
     root = load_toml(path)
     d = root.table("design")
@@ -74,19 +91,43 @@ def read_design(path: str | Path, landings_dir: Path | None = None) -> DesignCon
         if not p.exists():
             raise d.error("materials", "paths of existing material files or folders", str(p))
     mats = library(extra)
-    loads = _loads(root, path)
+    loads = _loads_config(root, path)
+    validate_references(root, loads)
     land_node = root.table("landings", optional=True)
-    items = tuple(read_item(n, mats, required) for n in root.tables("item", label="name"))
-    names = [i.name for i in items]
-    dup = next((n for n in names if names.count(n) > 1), None)
-    if dup:
-        raise root.error("item", "item names unique within a configuration", f"{dup!r} twice")
+    landings = read_landing_spec(land_node, path, loads) if land_node is not None else None
+    nodes = tuple(root.tables("item", label="name"))
+    read_items(nodes, mats, required, root)
     root.finish()
+    return DesignSpec(path, configuration, title, capsule, legs, units, required, decimals, mats, nodes, loads,
+                      landings)
+
+
+def _loads_config(root: Node, path: Path) -> LoadsConfig | None:
+    """[loads] file = "...": the loads config whose envelopes the checks reference (App. III -> App. IV)."""
+    node = root.table("loads", optional=True)
+    if node is None:
+        return None
+    file = path.parent / node.string("file")
+    node.finish()
+    if not file.exists():
+        raise node.error("file", "the path of an existing loads config", str(file))
+    return read_loads(file)
+
+
+def prepare(spec: DesignSpec, landings_dir: Path | None = None, progress: bool = False) -> DesignConfig:
+    """Compute the quasi-static envelopes, run the landing cases (into `landings_dir`, resumable; a temporary
+    folder when None), merge their member loads and resolve every check's load."""
+    loads = run_loads(spec.loads) if spec.loads is not None else None
     landings = None
-    if land_node is not None:                  # the config is valid: land, then read the checks' loads again
-        loads, landings = run_landings(land_node, path, loads, landings_dir)
+    if spec.landings is not None:
+        loads, landings = run_landings(spec.landings, loads, landings_dir, progress)
+    root = Node(spec.path, "", {})
+    if loads is not None:
         attach(root, loads)
-        root.context["load_references"] = []
-        items = tuple(read_item(n, mats, required) for n in root.tables("item", label="name"))
-    return DesignConfig(path, configuration, title, capsule, legs, units, required, decimals, items, loads,
-                        tuple(root.context.get("load_references", ())), landings)
+    else:
+        validate_references(root, None)
+    items = read_items(spec.items, spec.materials, spec.required, root)
+    return DesignConfig(spec.path, spec.configuration, spec.title, spec.capsule_mass, spec.legs, spec.units,
+                        spec.required, spec.decimals, items, loads, tuple(root.context.get("load_references", ())),
+                        landings, spec.weight_goal)
+

@@ -11,7 +11,7 @@ import pandas as pd
 from alightsize.checks.audit import CheckRecord, audit_json, run_audit
 from alightsize.checks.sizing import Sizing, size_item
 from alightsize.landings.criteria import violation_kinds
-from alightsize.pipeline.config import DesignConfig
+from alightsize.pipeline.config import DesignConfig, DesignSpec, prepare
 from alightsize.pipeline.items import Item
 from alightsize.pipeline.plots import design_factor_figure, weight_figure
 
@@ -46,8 +46,46 @@ class DesignResult:
         return self.config.landings is None or self.config.landings.ok
 
     @property
+    def weight_fraction(self) -> float | None:
+        """Leg-system weight (all legs) as a fraction of the capsule's mass, when both are known."""
+        m = self.config.capsule_mass
+        return self.per_leg * self.config.legs / m if m else None
+
+    @property
+    def weight_ok(self) -> bool:
+        """The leg system within its weight goal (always, without a goal)."""
+        goal, frac = self.config.weight_goal, self.weight_fraction
+        return goal is None or frac is None or frac <= goal
+
+    @property
     def ok(self) -> bool:
-        return self.checks_ok and self.landings_ok
+        return self.checks_ok and self.landings_ok and self.weight_ok
+
+    def governing(self) -> CheckRecord | None:
+        """The check with the smallest margin of safety."""
+        return min(self.records, key=lambda r: r.margin, default=None)
+
+    def summary_lines(self) -> list[str]:
+        """The one-screen summary: verdict, each criterion, worst landing, governing member, weight."""
+        lines = [self.verdict()]
+        land = self.config.landings
+        if land is not None:
+            n = len(land.rows)
+            kinds = Counter(k for r in land.failing for k in dict.fromkeys(violation_kinds(r["criteria_failed"])))
+            lines.append(f"landings: {n - len(land.failing)} of {n} meet every criterion" +
+                         "".join(f"; {k}: {c}" for k, c in kinds.most_common()))
+            worst = max(land.rows, key=lambda r: max(r[f"peak_xdd{i}_g"] or 0.0 for i in (1, 2, 3)))
+            peak = max(worst[f"peak_xdd{i}_g"] or 0.0 for i in (1, 2, 3))
+            lines.append(f"worst landing: {worst['run_id']} ({worst['outcome']}, peak {peak:.3g} g)")
+        gov = self.governing()
+        if gov is not None:
+            lines.append(f"governing check: {gov.item.name} {gov.outcome.mode}, f = {gov.outcome.factor:.3g} "
+                         f"(required {gov.required:g}; MS {gov.margin:+.3f})")
+        frac, goal = self.weight_fraction, self.config.weight_goal
+        if frac is not None:
+            lines.append(f"leg system: {self.per_leg * self.config.legs:.4g} kg, {100 * frac:.2f} % of the capsule"
+                         + (f" (goal {100 * goal:.2f} %: {'met' if self.weight_ok else 'exceeded'})" if goal else ""))
+        return lines
 
     def verdict(self) -> str:
         """One line: whether the design passes, and what fails."""
@@ -67,6 +105,9 @@ class DesignResult:
                 parts.append(f"{len(bad)} of {n} landings fail their criteria ({criteria_counts(bad)})")
             else:
                 parts.append(f"all {n} landings meet their criteria")
+        if not self.weight_ok:
+            parts.append(f"the leg system weighs {100 * self.weight_fraction:.2f} % of the capsule, over its goal of "
+                         f"{100 * self.config.weight_goal:.2f} %")
         return ("PASS: " if self.ok else "FAIL: ") + "; ".join(parts)
 
     @property
@@ -99,7 +140,11 @@ def criteria_counts(rows) -> str:
     return ", ".join(f"{k} {n}" for k, n in kinds.most_common())
 
 
-def run_design(cfg: DesignConfig) -> DesignResult:
+def run_design(cfg: DesignConfig | DesignSpec, landings_dir=None, progress: bool = False) -> DesignResult:
+    """Size, check and weigh a design; a design as read (`DesignSpec`) is prepared first (envelopes,
+    landings into `landings_dir`, loads resolved)."""
+    if isinstance(cfg, DesignSpec):
+        cfg = prepare(cfg, landings_dir, progress)
     sizings, items = [], []
     for item in cfg.items:
         if item.size is not None:

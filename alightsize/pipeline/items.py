@@ -6,9 +6,10 @@ from dataclasses import dataclass, replace
 from math import inf
 
 from alightsize.common import units
-from alightsize.checks.kinds import KINDS, Check, Outcome, out_of_range, read_check
+from alightsize.checks.kinds import Check, Outcome, out_of_range, read_check
 from alightsize.common.config import Node
 from alightsize.common.errors import InputError
+from alightsize.loads.quasi_static import Unloaded
 from alightsize.model.materials import Material, lookup, require
 from alightsize.model.sections import SHAPES, Section, geometry_error, read_section
 from alightsize.weights.methods import WeightSpec, read_weight
@@ -92,7 +93,13 @@ def read_item(node: Node, materials: dict[str, Material], required_default: floa
     sec_node = node.table("section", optional=True)
     section = read_section(sec_node) if sec_node else None
     length = node.quantity("length", "length", default=None)
-    checks = tuple(read_check(c) for c in node.tables("check", optional=True, label="kind"))
+    checks = []
+    for c in node.tables("check", optional=True, label="kind"):
+        try:
+            checks.append(read_check(c))
+        except Unloaded:                       # a derived check of a member never loaded in that sense
+            pass
+    checks = tuple(checks)
     required = node.number("required_design_factor", required_default)
     w_node = node.table("weight", optional=True)
     weight = read_weight(w_node, materials) if w_node else None
@@ -111,7 +118,7 @@ def _validate(item: Item, node: Node) -> None:
     """Evaluate once so a missing section property or material property is reported as bad input."""
     for check in item.checks:
         where = InputError(node.file, check.where, "", "")
-        for prop in KINDS[check.kind][2]:
+        for prop in check.needs():
             require(item.material, prop, where)
         bad = out_of_range(check, item.section)
         if bad:

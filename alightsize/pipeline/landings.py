@@ -21,11 +21,14 @@ import tempfile
 from dataclasses import dataclass
 from math import radians
 from pathlib import Path
+from typing import Callable
 
 from alightsize.common.config import Node
+from alightsize.common.errors import InputError
+from alightsize.loads.config import LoadsConfig
 from alightsize.loads.histories import dynamic_envelope
 from alightsize.loads.envelopes import Extreme
-from alightsize.loads.quasi_static import LoadsResult, pick
+from alightsize.loads.quasi_static import TELESCOPING, LoadsResult, pick
 from alightsize.landings.run_store import RunStore
 from alightsize.model.scene_config import impact_conditions, read_scene
 from alightsize.landings.study import Study, read_study
@@ -69,60 +72,96 @@ def _larger(a: Extreme | None, b: Extreme | None) -> Extreme | None:
     return b if abs(b.value) > abs(a.value) else a
 
 
+def _landing_extremes(rows: tuple[dict, ...]):
+    """(member, tension extreme, compression extreme) of every landing row."""
+    for r in rows:
+        for d in json.loads(r.get("member_loads_json") or "[]"):
+            yield (d["member"], _extreme(d["tension_N"], d["tension_at"], r["run_id"]),
+                   _extreme(d["compression_N"], d["compression_at"], r["run_id"]))
+
+
 def merge(loads: LoadsResult, rows: tuple[dict, ...], names: tuple[str, ...]) -> LoadsResult:
-    """The envelopes `names` extended by every landing's member extremes (others unchanged)."""
+    """The envelopes `names` extended by every landing's member extremes (others unchanged); "telescoping"
+    extends the App. III free-body forces, each landing force larger than the free body's replacing it."""
     env = dict(loads.envelopes)
-    for name in names:
+    found = list(_landing_extremes(rows))
+    for name in (n for n in names if n != TELESCOPING):
         members = []
         for m in env[name]:
             t, c = m.tension, m.compression
-            for r in rows:
-                for d in json.loads(r.get("member_loads_json") or "[]"):
-                    if d["member"] == m.member:
-                        t = _larger(t, _extreme(d["tension_N"], d["tension_at"], r["run_id"]))
-                        c = _larger(c, _extreme(d["compression_N"], d["compression_at"], r["run_id"]))
+            for member, lt, lc in found:
+                if member == m.member:
+                    t, c = _larger(t, lt), _larger(c, lc)
             members.append(dataclasses.replace(m, tension=t, compression=c))
         env[name] = tuple(members)
-    return dataclasses.replace(loads, envelopes=env)
+    out = dataclasses.replace(loads, envelopes=env)
+    if TELESCOPING in names:
+        tele, since = dict(loads.telescoping), dict(loads.telescoping_from or {})
+        for member, lt, _ in found:
+            if member in tele and lt is not None and abs(lt.value) > abs(tele[member]):
+                tele[member], since[member] = abs(lt.value), lt
+        out = dataclasses.replace(out, telescoping=tele, telescoping_from=since)
+    return out
 
 
-def run_landings(node: Node, design: Path, loads: LoadsResult | None, out: Path | None) -> tuple[LoadsResult, Landings]:
-    """Read `[landings]`, run its study into `out` (resumable; a temporary folder when None) and merge."""
+@dataclass(frozen=True)
+class LandingSpec:
+    """Landing cases as read: the study, the envelopes their member loads extend and the role they play.
+    `member_loads` (scene config, result) -> member extremes; None: dynamic_envelope with the loads' truss."""
+
+    study: Study
+    envelopes: tuple[str, ...]
+    role: str = "criteria"
+    member_loads: Callable | None = None
+
+
+def read_landing_spec(node: Node, design: Path, loads: LoadsConfig | None) -> LandingSpec:
+    """`[landings]` of a design config, checked against the loads config's envelope names."""
     node.allow(("study", "envelopes", "role", "note"))
     path = design.parent / node.string("study")
     names = tuple(node.strings("envelopes"))
     role = node.string("role", "criteria", choices=ROLES)
     node.string("note", "")
     node.finish()
-    if loads is None or not loads.config.cases:
+    if loads is None or not loads.cases:
         raise node.error("study", "landing cases beside an articulated [loads] file (its truss angles and "
                          "envelopes)", "no articulated [loads] configuration")
+    known = [c.name for c in loads.cases] + [c[0] for c in loads.combined]
     for n in names:
-        if n not in loads.envelopes:
-            raise node.error("envelopes", "names of envelopes of the [loads] file (" + ", ".join(loads.envelopes) + ")",
-                             repr(n))
+        if n not in known:
+            raise node.error("envelopes", "names of envelopes of the [loads] file (" + ", ".join(known) + ")", repr(n))
     if not path.is_file():
         raise node.error("study", "the path of a study TOML (relative to the design config)", f"{str(path)!r}: no such file")
     study = read_study(path)
     if role == "criteria" and study.criteria is None:
         raise node.error("role", f"role = \"load_cases\", or [criteria] in {path.name} for the landings to meet",
                          "role = \"criteria\" (the default) and a study without [criteria]")
+    return LandingSpec(study, names, role, partial(dynamic_envelope, truss=loads.cases[0].truss))
+
+
+def run_landings(spec: LandingSpec, loads: LoadsResult, out: Path | None,
+                 progress: bool = False) -> tuple[LoadsResult, Landings]:
+    """Run the landing cases into `out` (resumable; a temporary folder when None) and merge their member loads
+    into the envelopes."""
+    study = spec.study
     with tempfile.TemporaryDirectory() as tmp:
         folder = out or Path(tmp)
-        run_sweep(study, folder, member_loads=partial(dynamic_envelope, truss=loads.config.cases[0].truss))
+        run_sweep(study, folder, member_loads=spec.member_loads, quiet=not progress)
         store = RunStore(folder / "runs.sqlite")
         rows = tuple(store.rows([r.run_id for r in study.runs]))
         store.close()
     failed = [r for r in rows if r["status"] != "done"]
     if failed:
-        raise node.error("study", "landing cases that all run", f"runs {', '.join(r['run_id'] for r in failed)} "
-                         f"failed: {failed[0]['message']}")
+        raise InputError(str(study.path), "landings", "landing cases that all run",
+                         f"runs {', '.join(r['run_id'] for r in failed)} failed: {failed[0]['message']}")
     conditions = tuple(impact_conditions(read_scene(r.scene, r.overrides)) for r in study.runs)
-    return merge(loads, rows, names), Landings(study, names, rows, loads, role, conditions)
+    return merge(loads, rows, spec.envelopes), Landings(study, spec.envelopes, rows, loads, spec.role, conditions)
 
 
 def quasi_static_load(landings: Landings, envelope: str, member: str, sense: str) -> float | None:
     """The load magnitude an envelope reference had before the landings joined (None: not loaded so)."""
+    if envelope == TELESCOPING:
+        return abs(landings.quasi_static.telescoping[member])
     qs = pick(landings.quasi_static, envelope, member, sense)
     return abs(qs.value) if qs else None
 

@@ -1,0 +1,296 @@
+"""A lander file: one TOML from which every analysis derives (the landing scene, the App. III envelopes, the
+members' checks, the landing cases of the requirements). Reading it only reads and validates.
+
+```
+[lander]        name, title, gravity ("earth" | "moon" | "mars" | an acceleration), rules, materials
+[capsule] [cells.NAME] [legs] [terrain] [controls] [initial]     as in a scene (docs/reference/scene.md)
+[structure]     telescoping: bearing_length, friction; articulated: truss, psi_final, grid, configuration, combined
+[members.NAME]  material, section, role, size, weight, ... (alightsize.pipeline.members)
+[[item]]        App. IV items with their checks written out (overrides; the 1966 examples)
+[requirements]  required_design_factor, decimals, weight_goal, criteria, envelope, monte_carlo
+[report]        units = "US" | "SI"
+```
+"""
+
+from __future__ import annotations
+
+import itertools
+from dataclasses import dataclass, replace
+from functools import partial
+from math import degrees, pi
+from pathlib import Path
+
+from alightsize_sim.telescoping_leg import TelescopingLeg as SimTelescopingLeg
+
+from alightsize.common.config import Node, load_toml
+from alightsize.landings.criteria import Criteria, read_criteria
+from alightsize.landings.dispersions import Dispersion
+from alightsize.landings.study import Run, Study, _sampled
+from alightsize.loads.config import NAME, LoadsConfig, read_loads
+from alightsize.loads.envelopes import default_grid
+from alightsize.loads.histories import dynamic_envelope, telescoping_dynamic_envelope
+from alightsize.loads.quasi_static import TELESCOPING, validate_references
+from alightsize.loads.telescoping import TelescopingLeg
+from alightsize.model.gravity import read_gravity
+from alightsize.model.materials import library
+from alightsize.model.scene_config import LANDER_ONLY, SceneConfig, read_scene
+from alightsize.pipeline.config import UNIT_SYSTEMS, DesignSpec, read_design, read_items
+from alightsize.pipeline.landings import LandingSpec
+from alightsize.pipeline.members import RULES, member_item
+
+SCENE_TABLES = ("capsule", "cells", "legs", "terrain", "initial", "controls", "output")
+ALL_CONFIGURATIONS = "all"           # the combined envelope of App. III cell variants when none is named
+DEFAULT_SAMPLES = 100                # Monte Carlo landings: about a minute on 2 cores (docs/notes)
+
+
+@dataclass(frozen=True)
+class Envelope:
+    """Impact envelope, SI: (low, high) descent and horizontal speeds; largest slope, inclination and roll rate
+    (either sign); footpad friction range (None: the scene's terrain)."""
+
+    vertical: tuple[float, float]
+    horizontal: tuple[float, float]
+    slope: float
+    inclination: float
+    roll_rate: float
+    friction: tuple[float, float] | None
+
+
+@dataclass(frozen=True)
+class Requirements:
+    required: float
+    decimals: int | None
+    weight_goal: float | None
+    criteria: Criteria
+    envelope: Envelope
+    samples: int
+    seed: int
+    cell_scatter: float
+
+
+@dataclass(frozen=True)
+class Lander:
+    """A lander as read: its design (`spec`, what `alightsize.design` runs), its nominal landing scene and its
+    requirements."""
+
+    spec: DesignSpec
+    scene: SceneConfig
+    requirements: Requirements
+
+    @property
+    def study(self) -> Study:
+        return self.spec.landings.study
+
+
+def is_lander(path: str | Path) -> bool:
+    """Whether a TOML file is a lander file (it has a [lander] table)."""
+    return "lander" in load_toml(path).data
+
+
+def _range(node: Node, key: str, dim: str, default: tuple[float, float] | None) -> tuple[float, float] | None:
+    """A value or a [low, high] range; a single value v is the range (v, v)."""
+    if not node.has(key):
+        return default
+    raw = node.raw(key)
+    if isinstance(raw, list):
+        if len(raw) != 2:
+            raise node.error(key, "a value or a [low, high] range", repr(raw))
+        lo, hi = (node.parse_quantity(f"{key}[{i}]", v, dim, positive=False) if dim else float(v)
+                  for i, v in enumerate(raw))
+    else:
+        lo = hi = node.parse_quantity(key, raw, dim, positive=False) if dim else float(raw)
+    if lo < 0 or hi < lo:
+        raise node.error(key, "0 <= low <= high", repr(raw))
+    return lo, hi
+
+
+def _envelope(node: Node) -> Envelope:
+    node.allow(("vertical_speed", "horizontal_speed", "slope", "inclination", "roll_rate", "friction", "note"))
+    vertical = _range(node, "vertical_speed", "velocity", None)
+    if vertical is None or vertical[1] <= 0:
+        raise node.error("vertical_speed", "a descent speed above 0, or a [low, high] range", repr(node.raw("vertical_speed", None)))
+    horizontal = _range(node, "horizontal_speed", "velocity", (0.0, 0.0))
+    slope = node.quantity("slope", "angle", 0.0, positive=False) if node.has("slope") else 0.0
+    if not 0 <= slope < pi / 2:
+        raise node.error("slope", "the largest slope, 0 to below 90 deg", f"{degrees(slope):.4g} deg")
+    incl = node.quantity("inclination", "angle", 0.0, positive=False) if node.has("inclination") else 0.0
+    rate = node.quantity("roll_rate", "angular_velocity", 0.0, positive=False) if node.has("roll_rate") else 0.0
+    if incl < 0 or rate < 0:
+        raise node.error("inclination" if incl < 0 else "roll_rate", "a largest magnitude (either sign is landed)",
+                         "a negative value")
+    friction = _range(node, "friction", "", None)
+    node.string("note", "")
+    node.finish()
+    return Envelope(vertical, horizontal, slope, incl, rate, friction)
+
+
+def _requirements(node: Node) -> Requirements:
+    node.allow(("required_design_factor", "decimals", "weight_goal", "criteria", "envelope", "monte_carlo", "note"))
+    required = node.number("required_design_factor", 1.25)
+    decimals = node.integer("decimals", None, minimum=0)
+    goal = node.number("weight_goal", None)
+    if goal is not None and not 0 < goal < 1:
+        raise node.error("weight_goal", "the leg system's weight as a fraction of the capsule, in (0, 1)", repr(goal))
+    criteria = read_criteria(node.table("criteria", optional=True)) or Criteria(None, None)
+    envelope = _envelope(node.table("envelope"))
+    mc = node.table("monte_carlo", optional=True)
+    samples, seed, scatter = DEFAULT_SAMPLES, 1, 0.0
+    if mc:
+        mc.allow(("samples", "seed", "cell_scatter", "note"))
+        samples = mc.integer("samples", DEFAULT_SAMPLES, minimum=0)
+        seed = mc.integer("seed", 1, minimum=0)
+        scatter = mc.number("cell_scatter", 0.0, positive=False)
+        mc.string("note", "")
+        mc.finish()
+    node.string("note", "")
+    node.finish()
+    return Requirements(required, decimals, goal, criteria, envelope, samples, seed, scatter)
+
+
+def _q(x: float, unit: str) -> str:
+    return f"{x!r} {unit}"
+
+
+def landing_cases(path: Path, name: str, req: Requirements, legs: int) -> Study:
+    """The envelope's corners (each range at both ends, slope, inclination and roll rate at either sign, a leg
+    leading or two legs straddling the velocity) and `samples` seeded Monte Carlo landings drawn uniformly
+    over the envelope (heading, roll and, with cell_scatter, every cell's crushing force as well)."""
+    e = req.envelope
+    axes: dict[str, list] = {"initial.velocity[2]": [_q(-v, "m/s") for v in sorted(set(e.vertical))],
+                             "initial.velocity[1]": [_q(h, "m/s") for h in sorted(set(e.horizontal))],
+                             "initial.roll": ["0.0 deg", _q(180.0 / legs, "deg")]}
+    for key, value, unit in (("terrain.slope", degrees(e.slope), "deg"), ("initial.inclination", degrees(e.inclination), "deg"),
+                             ("initial.rates[2]", e.roll_rate, "rad/s")):
+        if value > 0:
+            axes[key] = [_q(-value, unit), _q(value, unit)]
+    fixed = {}
+    if e.friction is not None:
+        fixed["terrain.mu_static"] = e.friction[1]
+        axes["terrain.mu_dynamic"] = sorted(set(e.friction))
+    combos = list(itertools.product(*axes.values()))
+    width = len(str(len(combos)))
+    points = [(f"corner-{n + 1:0{width}d}", "lander", {**fixed, **dict(zip(axes, c))}, dict(zip(axes, c)), None)
+              for n, c in enumerate(combos)]
+    disp = [Dispersion("initial.velocity[2]", "uniform", (-e.vertical[1], -e.vertical[0]), "m/s", False),
+            Dispersion("initial.velocity[1]", "uniform", e.horizontal, "m/s", False),
+            Dispersion("initial.heading", "uniform", (-180.0, 180.0), "deg", False),
+            Dispersion("initial.roll", "uniform", (0.0, 360.0 / legs), "deg", False)]
+    for key, value, unit in (("terrain.slope", degrees(e.slope), "deg"), ("initial.inclination", degrees(e.inclination), "deg"),
+                             ("initial.rates[2]", e.roll_rate, "rad/s")):
+        if value > 0:
+            disp.append(Dispersion(key, "uniform", (-value, value), unit, False))
+    if e.friction is not None and e.friction[0] < e.friction[1]:
+        disp.append(Dispersion("terrain.mu_dynamic", "uniform", e.friction, "", False))
+    if req.cell_scatter > 0:
+        disp.append(Dispersion("legs.cell_factors", "normal", (1.0, req.cell_scatter), "", True))
+    runs = [Run(*p[:2], path, *p[2:]) for p in points]
+    if req.samples:
+        base = [("mc", "lander", dict(fixed), {}, None)]
+        runs += [Run(rid, skey, path, over, params, ref)
+                 for rid, skey, over, params, ref in _sampled(base, disp, req.samples, req.seed, {"lander": path})]
+    plot = ("initial.velocity[1]", "initial.velocity[2]")
+    return Study(path, name, f"Landing cases of {name}: {len(combos)} envelope corners, {req.samples} Monte Carlo",
+                 tuple(runs), req.criteria, tuple(k for k in axes if k != "initial.velocity[2]"), "initial.velocity[2]",
+                 False, req.seed, plot)
+
+
+def _crush(curve) -> float:
+    """A cell's crushing force: the largest force of its curve before the bottoming segment."""
+    return max(curve.force[:-1])
+
+
+def _loads_config(root: Node, path: Path, name: str, scene: SceneConfig, units: str) -> tuple[LoadsConfig, tuple[str, ...]]:
+    """The App. III loads config of the lander's own legs and cells (and the envelopes its members use)."""
+    node = root.table("structure", optional=True) or Node(root.file, "structure", {}, root.context)
+    leg = scene.scene.legs[0]
+    if isinstance(leg, SimTelescopingLeg):
+        node.allow(("bearing_length", "friction", "note"))
+        if not leg.pads:
+            raise root.error("legs.pad_angles", "rotational pads on the telescoping leg (App. III free body)", "none")
+        tele = TelescopingLeg(_crush(leg.axial.curve), _crush(leg.pads[0].curve), leg.pad_lever, leg.rho,
+                              node.quantity("bearing_length", "length"), node.number("friction", 0.05, positive=False))
+        node.string("note", "")
+        node.finish()
+        if not 0 <= tele.friction < 1:
+            raise node.error("friction", "a friction coefficient in [0, 1)", f"{tele.friction}")
+        return LoadsConfig(path, f"{name} telescoping leg (App. III free body)", units, default_grid(), (), (), tele), \
+            (TELESCOPING,)
+    node.allow(("truss", "psi_final", "grid", "configuration", "combined", "name", "note"))
+    legs, cells = root.data["legs"], root.data["cells"]
+    own_name = node.string("name", name)
+    own = {"name": own_name, "psi_initial": legs["psi_initial"], "psi_final": node.raw("psi_final"),
+           "upper": {k: cells[legs["upper"]][k] for k in ("deflection", "force")},
+           "lower": {k: cells[legs["lower"]][k] for k in ("deflection", "force")}}
+    if "length_scale" in legs:
+        own["length_scale"] = legs["length_scale"]
+    extra = node.raw("configuration", [])
+    combined = list(node.raw("combined", []))
+    if extra and not combined:
+        combined.append({"name": ALL_CONFIGURATIONS, "configurations": [c.get("name") for c in extra] + [own_name]})
+    data = {"geometry": legs["geometry"], "truss": node.raw("truss"), "configuration": [*extra, own],
+            "combined": combined, **({"grid": node.raw("grid")} if node.has("grid") else {})}
+    node.string("note", "")
+    node.finish()
+    cfg = read_loads(path, Node(root.file, "structure", data, root.context))
+    cfg = replace(cfg, title=f"{name} articulated leg (App. III envelopes)", units=units)
+    return cfg, (own_name, *(c[0] for c in cfg.combined))
+
+
+def read_lander(path: str | Path) -> Lander:
+    """Read and validate a lander file; any problem is an InputError naming file, key path, what was expected
+    and what was found. Nothing is computed (`alightsize.design` runs the analyses)."""
+    path = Path(path)
+    root = load_toml(path)
+    root.allow((*SCENE_TABLES, *LANDER_ONLY))
+    head = root.table("lander")
+    head.allow(("name", "title", "gravity", "rules", "materials", "note"))
+    name = head.string("name", path.stem)
+    if not NAME.fullmatch(name):
+        raise head.error("name", "1-31 letters, digits, '_', '.' or '-' (it names files and sheets)", repr(name))
+    title = head.string("title", name)
+    rules = head.string("rules", "current", choices=tuple(RULES))
+    extra = [path.parent / p for p in head.strings("materials", [])]
+    for p in extra:
+        if not p.exists():
+            raise head.error("materials", "paths of existing material files or folders", str(p))
+    if head.has("gravity"):
+        read_gravity(head, "gravity")             # checked here, so an error names [lander], not the scene
+    head.string("note", "")
+    head.finish()
+    scene = read_scene(path)
+    for t in SCENE_TABLES:
+        root.raw(t, None)
+    rep = root.table("report", optional=True)
+    units = rep.string("units", "SI", choices=UNIT_SYSTEMS) if rep else "SI"
+    if rep:
+        rep.finish()
+    req = _requirements(root.table("requirements"))
+    loads, envelopes = _loads_config(root, path, name, scene, units)
+    mats = library(extra)
+    members = root.table("members", optional=True)
+    nodes = []
+    for key in (members.data if members else {}):
+        m = members.table(key)
+        kind = "telescoping" if loads.telescoping else "articulated"
+        data = member_item(m, key, kind, loads.telescoping, envelopes[-1], rules)
+        nodes.append(Node(root.file, m.path, data, root.context))
+    if members:
+        members.finish()
+    nodes += root.tables("item", optional=True, label="name")
+    if not nodes:
+        raise root.error("members", "at least one [members.NAME] table or [[item]]", "neither")
+    validate_references(root, loads)
+    read_items(tuple(nodes), mats, req.required, root)
+    root.finish()
+    study = landing_cases(path, name, req, len(scene.scene.legs))
+    member_loads = (partial(telescoping_dynamic_envelope, leg=loads.telescoping) if loads.telescoping
+                    else partial(dynamic_envelope, truss=loads.cases[0].truss))
+    landings = LandingSpec(study, envelopes, "criteria", member_loads)
+    spec = DesignSpec(path, name, title, scene.scene.mass, len(scene.scene.legs), units, req.required, req.decimals,
+                      mats, tuple(nodes), loads, landings, req.weight_goal)
+    return Lander(spec, scene, req)
+
+
+def read_input(path: str | Path) -> DesignSpec:
+    """A lander file or a design config, as read (`alightsize design` and `audit` take either)."""
+    return read_lander(path).spec if is_lander(path) else read_design(path)

@@ -1,0 +1,117 @@
+"""Members of a lander file and the checks derived from their role: a `[members.NAME]` table becomes an item
+(the App. IV schema of alightsize.pipeline.items) whose checks, loads and lengths come from the leg.
+
+Articulated legs: NAME is an App. III member (PU1, PL1, R123, ...), a truss tube by default (`role`):
+axial stress, column buckling, local buckling under its envelope load; `role = "rod"`: tension only;
+`role = "pin"`: double shear and bearing of the pin through it. Telescoping legs (App. III free body):
+`lower_tube` and `upper_tube` (axial crush AF1 with the bending moment P1 (rho - a) at the pads, the lower
+tube also as a column of the leg's length rho, or `column_length`; each tube weighs its span from the pads,
+rho - a and a, unless `length` is given), `axial_cap` (fixed-edge plate under AF1), `pad_plate`
+(supported plate under P3) and `swivel_pin` (the pin carrying AF1 and P2).
+
+`rules = "current"` (default) applies Johnson's parabola below the Euler transition, the SP-8007 thin-wall
+knockdown, Roark's equivalent load radius and the Tresca criterion on plates; `rules = "app_iv"` the 1966
+formulas (Euler only, 0.4 E t / D, (sigma_r + sigma_t)/2 against Fcy/2).
+"""
+
+from __future__ import annotations
+
+from alightsize.common.config import Node
+from alightsize.common.errors import InputError
+from alightsize.loads.quasi_static import TELESCOPING
+from alightsize.loads.telescoping import TelescopingLeg
+from alightsize_sim.articulated_statics import MEMBERS
+
+RULES = {"current": {"column": "johnson_euler", "local": "sp8007", "plate": "tresca", "r0": True},
+         "app_iv": {"column": "euler", "local": "app_iv", "plate": "app_iv", "r0": False}}
+TELESCOPING_MEMBERS = ("lower_tube", "upper_tube", "axial_cap", "pad_plate", "swivel_pin")
+ARTICULATED_ROLES = ("truss", "rod", "pin")
+# what a member table may say besides its derived checks (passed on to the item)
+ITEM_KEYS = ("material", "section", "length", "weight", "size", "count", "note", "required_design_factor")
+
+
+def _si(x: float, unit: str) -> str:
+    return f"{x!r} {unit}"
+
+
+def _ref(env: str, member: str, sense: str = "magnitude") -> dict:
+    """An envelope load; a member never loaded in that sense has no check of that sense."""
+    return {"envelope": env, "member": member, "sense": sense, "optional": True}
+
+
+def _tube(load: dict, rules: dict, moment: tuple[dict, str] | None, column: str | None) -> list[dict]:
+    """Axial (or combined) stress, local buckling and, with a column length, column buckling of a tube."""
+    bend = {"moment_force": moment[0], "moment_arm": moment[1]} if moment else {}
+    out = [{"kind": "combined", "load": load, **bend} if moment else {"kind": "compression", "load": load}]
+    if column:
+        out.append({"kind": "column_buckling", "load": load, "length": column, "formula": rules["column"]})
+    out.append({"kind": "local_buckling", "load": load, **bend, "formula": rules["local"]})
+    return out
+
+
+def _plate(kind: str, load: dict, node: Node, rules: dict) -> list[dict]:
+    return [{"kind": kind, "load": load, "load_radius": node.raw("load_radius"), "theory": rules["plate"],
+             "equivalent_radius": rules["r0"]}]
+
+
+def _pin(loads: list[dict], node: Node) -> list[dict]:
+    """A pin of the member's rod section: double (or n-plane) shear and bearing on its lug."""
+    pin = node.table("pin")
+    pin.allow(("lug_thickness", "planes"))
+    t = pin.raw("lug_thickness")
+    planes = pin.integer("planes", 2, minimum=1)
+    pin.finish()
+    return [{"kind": "pin_double_shear", "loads": loads, "planes": planes},
+            {"kind": "bearing", "loads": loads, "bearing_length": t}]
+
+
+def telescoping_checks(name: str, node: Node, leg: TelescopingLeg, rules: dict) -> list[dict]:
+    """The checks of a telescoping-leg member from the App. III free body (AFFDL-TR-66-33 App. III-IV)."""
+    f = {k: _ref(TELESCOPING, k) for k in ("AF1", "P1", "P2", "P3")}
+    arm = _si(leg.length - leg.pad_lever, "m")          # P1 (rho - a) = w2 chi^2 / 6 at the pads (App. III)
+    column = node.raw("column_length", None) or _si(leg.length, "m")
+    if name == "lower_tube":
+        return _tube(f["AF1"], rules, (f["P1"], arm), column)
+    if name == "upper_tube":
+        return _tube(f["AF1"], rules, (f["P1"], arm), None)
+    if name == "axial_cap":
+        return _plate("plate_fixed_center_load", f["AF1"], node, rules)
+    if name == "pad_plate":
+        return _plate("plate_supported_center_load", f["P3"], node, rules)
+    return _pin([f["AF1"], f["P2"]], node)
+
+
+def articulated_checks(name: str, node: Node, envelope: str, rules: dict) -> list[dict]:
+    """The checks of an App. III truss member under its envelope extremes (AFFDL-TR-66-33 App. III-IV)."""
+    role = node.string("role", "truss", choices=ARTICULATED_ROLES)
+    tension = {"kind": "tension", "load": _ref(envelope, name, "tension")}
+    if role == "rod":
+        return [tension]
+    if role == "pin":
+        return _pin([_ref(envelope, name)], node)
+    length = node.raw("length", None)
+    if length is None:
+        raise node.error("length", "the member's column length (articulated truss lengths are not derived from "
+                         "the leg geometry)", "nothing")
+    return _tube(_ref(envelope, name, "compression"), rules, None, length) + [tension]
+
+
+def member_item(node: Node, name: str, kind: str, leg: TelescopingLeg | None, envelope: str,
+                default_rules: str) -> dict:
+    """A `[members.NAME]` table as an item table with its derived checks (`rules` and role read here)."""
+    allowed = TELESCOPING_MEMBERS if kind == "telescoping" else MEMBERS
+    if name not in allowed:
+        raise InputError(node.file, node.path, f"a member of the {kind} leg: " + ", ".join(allowed), repr(name))
+    node.allow((*ITEM_KEYS, "rules", "role", "load_radius", "pin", "column_length"))
+    rules = RULES[node.string("rules", default_rules, choices=tuple(RULES))]
+    checks = (telescoping_checks(name, node, leg, rules) if kind == "telescoping"
+              else articulated_checks(name, node, envelope, rules))
+    item = {k: node.data[k] for k in ITEM_KEYS if k in node.data}
+    if kind == "telescoping" and name.endswith("_tube") and "length" not in item:   # each tube's span from the pads
+        item["length"] = _si(leg.length - leg.pad_lever if name == "lower_tube" else leg.pad_lever, "m")
+    if "weight" not in item and "section" in node.data:
+        shape = node.data["section"].get("shape") if isinstance(node.data["section"], dict) else None
+        default = {"tube": {"method": "tube"}, "plate": {"method": "disc"}}.get(shape)
+        if default and (shape != "tube" or "length" in item):
+            item["weight"] = default
+    return {"name": name, **item, "check": checks}
