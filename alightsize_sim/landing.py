@@ -139,7 +139,7 @@ class _Run:
         self.work = (np.zeros((n, 3)), np.zeros(n, np.int64), np.zeros((n, C)), np.zeros((n, C)), np.zeros((n, 3)),
                      np.zeros((n, lk.N_MT)))
         self.cnt = np.zeros(6, np.int64)
-        self.run_state = np.array([ctl.first_step, 0.0, 0.0, -1.0, -1.0, -1.0, -1.0])
+        self.run_state = np.array([ctl.first_step, 0.0, 0.0, -1.0, -1.0, -1.0, -1.0, -1.0])
         self.ctl_arr = np.array([ctl.t_final, ctl.rtol, ctl.atol, ctl.fixed_step or 0.0, ctl.max_step, ctl.event_tol,
                                  float(ctl.stop_on_bottoming), np.cos(ctl.tip_angle), ctl.body_clearance,
                                  float(ctl.closed_form_flight and axisymmetric(scene.inertia)), ctl.quiet_fraction,
@@ -229,7 +229,6 @@ def simulate(scene: Scene, ctl: Controls) -> Result:
     Y = run.H_y[:k].copy()
     ke0, ke1 = kinetic(scene, Y[0]), kinetic(scene, Y[-1])
     released = float(scene.mass * scene.gravity @ (Y[-1, 0:3] - Y[0, 0:3]))
-    C = run.C
     elastic = 0.0
     for i in range(run.n):
         if run.contact[i]:

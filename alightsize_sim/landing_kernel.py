@@ -19,7 +19,7 @@ from numba import njit
 from . import crush_cell
 from .footpad_slip import FLOOR, footpad_force
 from .rigid_body import free_flight, quat_matrix, quat_rate
-from .stability import quiescence_momenta, quiescence_update, stable_by_energy, tipping_margins
+from .stability import hanging_margin, quiescence_momenta, quiescence_update, stable_by_energy, tipping_margins
 from .legs import free_footpad, leg_force, lift_shape, main_set, member_strike
 from .vec3 import cross, mtv, mv
 
@@ -44,12 +44,13 @@ K_STEPS, K_REJECTED, K_RHS, K_HIST, K_EVENTS, K_TRIALS = range(6)
 # Leg state columns of the work array mt: static margin, reach deficit, alpha, beta, psi, footpad path error.
 N_MT = 6
 # Run scalars (float array): step size, quiescence clock, reference momentum, first bottoming (t, leg, cell), the
-# leg whose intermediate member struck the terrain.
-S_H, S_QUIET, S_MOMENTUM, S_BOT_T, S_BOT_LEG, S_BOT_CELL, S_STRUCK = range(7)
+# leg whose intermediate member struck the terrain, since when a capsule with a leg in the air has held stable.
+S_H, S_QUIET, S_MOMENTUM, S_BOT_T, S_BOT_LEG, S_BOT_CELL, S_STRUCK, S_HANG = range(8)
 
 MAX_STALL = 100     # accepted steps in a row that do not advance time before the run is declared failed
 GTOL = 1e-12       # m: a contact event function this close above zero counts as there
 ARM = 1e-7          # m: a leg's next switch is armed once it is this far from its last one
+LOCKED = -1         # armed[i]: a leg that left at once on touching stays unarmed until it touches again
 BAND = 1e-4         # m: an unarmed leg switches only this far past zero (grazing contact never chatters)
 PATH_FLOOR = 100.0  # event_tol: steps this short or shorter skip the footpad path error (_error_norm)
 
@@ -119,7 +120,7 @@ def _events(cells, geo, mu, mem, contact, sliding, shape, armed, y, dt, mt, g, r
             g[i] = dt[i, 0] - main_set(cells, i, mem[i]) - mt[i, 1]
         else:
             g[i] = free_footpad(geo, cells, i, mem[i], shape[i], y[0:3], R)[2]
-        if not (raw or armed[i] or (contact[i] and mt[i, 1] > 0.0)):
+        if not (raw or armed[i] > 0 or (contact[i] and mt[i, 1] > 0.0)):
             g[i] += BAND
         g[n + i] = mt[i, 0] if located and contact[i] and not sliding[i] else 1.0
 
@@ -182,7 +183,8 @@ def _commit(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, energy, l
     C = mem.shape[1]
     started = False
     for i in range(len(contact)):
-        armed[i] = armed[i] or g[i] > ARM
+        if armed[i] == 0 and g[i] > ARM:
+            armed[i] = 1
         if not contact[i]:
             continue
         known = last[i, 2 * C] > 0.0
@@ -218,7 +220,8 @@ def switch(geo, cells, mem, contact, P, sliding, shape, armed, y, which, last, w
         _, alpha, beta, psi = leg_force(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R, y[3:6],
                                         y[10:13], dt[which], ft[which], Xt[which])
         contact[which] = 0
-        shape[which, 0], shape[which, 1], shape[which, 2] = lift_shape(geo, which, alpha, beta, psi, y[0:3], R)
+        shape[which, 0], shape[which, 1], shape[which, 2] = lift_shape(geo, cells, which, mem[which], alpha, beta, psi,
+                                                                       dt[which, 0], y[0:3], R)
         last[which, 2 * C] = 0.0
     else:
         pad = free_footpad(geo, cells, which, mem[which], shape[which], y[0:3], R)
@@ -232,7 +235,8 @@ def switch(geo, cells, mem, contact, P, sliding, shape, armed, y, which, last, w
 
 
 @njit(cache=True)
-def _monitor(geo, mass, inertia, gravity, bottoming, up, body, order, mem, contact, P, shape, y, t, dt_step, ctl, run):
+def _monitor(geo, cells, mass, inertia, gravity, bottoming, up, body, order, mem, contact, P, shape, y, t, dt_step, ctl,
+             run):
     """Outcome checks after an accepted step; a status or -1."""
     R = quat_matrix(y[6:10])
     n = len(contact)
@@ -265,14 +269,52 @@ def _monitor(geo, mass, inertia, gravity, bottoming, up, body, order, mem, conta
             return QUIET
     # Energy criterion (QUIMOT), only once the CG has stopped approaching the terrain, so that the peak
     # strokes and accelerations are complete when it ends the run (the report checked from t = 0.05 s on).
-    if ctl[C_ENERGY_T] >= 0.0 and t >= ctl[C_ENERGY_T] and on_ground == n and n >= 3 and y[5] >= 0.0:
-        pads = np.empty((n, 3))
-        for k in range(n):
-            pads[k] = P[order[k]]
+    # It is judged over the polygon of the footpads on the ground (at least three, in their order round the
+    # capsule). With a leg in the air (a lander resting on three legs of four on a slope) the capsule must
+    # also be unable to bring that leg down (stability.hanging_margin) and have held so for one full bounce
+    # (2 x period, pi sqrt(m / k)): not a bounce that lifts it again. No touchdown, and none of its loads,
+    # then comes after the run ends.
+    if ctl[C_ENERGY_T] >= 0.0 and t >= ctl[C_ENERGY_T] and on_ground >= 3 and (on_ground < n or y[5] >= 0.0):
+        pads = np.empty((on_ground, 3))
+        k = 0
+        for m in range(n):
+            if contact[order[m]]:
+                pads[k] = P[order[m]]
+                k += 1
         margins = tipping_margins(y[0:3], y[3:6], R, y[10:13], mass, inertia, gravity, pads, True)
-        if stable_by_energy(margins):                          # eq. 89-95 (QUIMOT) for every adjacent pair
-            return STABLE
+        if on_ground == n:
+            if stable_by_energy(margins):                       # eq. 89-95 (QUIMOT) for every adjacent pair
+                return STABLE
+        elif stable_by_energy(margins) and _hanging_clear(geo, cells, mass, inertia, gravity, order, mem, contact, P,
+                                                          shape, y, R):
+            if run[S_HANG] < 0.0:
+                run[S_HANG] = t
+            if t - run[S_HANG] >= 2.0 * ctl[C_PERIOD] and y[5] >= 0.0:
+                return STABLE
+            return -1
+    run[S_HANG] = -1.0
     return -1
+
+
+@njit(cache=True)
+def _hanging_clear(geo, cells, mass, inertia, gravity, order, mem, contact, P, shape, y, R):
+    """Every leg in the air is clear of the terrain and cannot be brought down by the capsule's kinetic
+    energy about the edge through its grounded neighbours (in their order round the capsule)."""
+    n = len(contact)
+    for m in range(n):
+        i = order[m]
+        if contact[i]:
+            continue
+        a, b = m, m
+        while not contact[order[a]]:
+            a = (a - 1) % n
+        while not contact[order[b]]:
+            b = (b + 1) % n
+        foot = np.array(free_footpad(geo, cells, i, mem[i], shape[i], y[0:3], R))
+        if not foot[2] > 0.0 or hanging_margin(y[0:3], y[3:6], y[10:13], mass, inertia, gravity, P[order[a]],
+                                               P[order[b]], foot) <= 0.0:
+            return False
+    return True
 
 
 @njit(cache=True)
@@ -524,9 +566,13 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
         _events(cells, geo, mu, mem, contact, sliding, shape, armed, y, dt, mt, g_prev, False)
         # A footpad that is out of reach from the start (a touchdown or slide start leaving it beyond the
         # friction cone at the edge of its reach) never crosses zero from above: it leaves now.
+        # It stays unarmed until it touches again (BAND past zero), whatever its height: a touchdown is located
+        # to within event_tol, so the footpad may hang above the terrain by more than ARM, and re-arming it
+        # there would let it touch and leave again at the same instant.
         for i in range(n):
             if contact[i] and mt[i, 1] > 0.0 and g_prev[i] <= 0.0:
                 switch(geo, cells, mem, contact, P, sliding, shape, armed, y, i, last, work)
+                armed[i] = LOCKED
                 rhs(*args, y, K[0], *work)
                 cnt[K_RHS] += 1
                 H_dy[k] = K[0]
@@ -539,7 +585,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
             h = min(ctl[C_MAXSTEP], h * min(5.0, 0.9 * max(e, 1e-10) ** -0.2))
         if not flight:
             run_state[S_H] = h
-        status = _monitor(geo, mass, inertia, gravity, bottoming, up, body, order, mem, contact, P, shape, y, t, h_acc,
+        status = _monitor(geo, cells, mass, inertia, gravity, bottoming, up, body, order, mem, contact, P, shape, y, t, h_acc,
                           ctl, run_state)
         if status >= 0:
             return status, t

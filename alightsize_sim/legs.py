@@ -79,11 +79,14 @@ def free_footpad(geo, cells, i, mem, shape, r, R):
 
 
 @njit(cache=True)
-def lift_shape(geo, i, alpha, beta, psi, r, R):
-    """Stored free geometry of a leg lifting off with the given shape."""
+def lift_shape(geo, cells, i, mem, alpha, beta, psi, main, r, R):
+    """Stored free geometry of a leg lifting off with the given shape and main-cell deflection. A telescoping
+    leg keeps (alpha, beta) and the compression beyond its set it still held (zero unless the lift-off was
+    located at a jump of its event function, a slide leaving the leg's reach), so that its free footpad starts
+    where it left the terrain, not below it, and its touchdown can be found."""
     if geo[7][i] == ARTICULATED:
         return articulated_leg.lift_shape(geo, i, alpha, beta, psi, r, R)
-    return alpha, beta, psi
+    return alpha, beta, max(main - main_set(cells, i, mem), 0.0)
 
 
 @njit(cache=True)

@@ -180,6 +180,25 @@ def stable_by_energy(margins: np.ndarray) -> bool:
 
 
 @njit(cache=True)
+def hanging_margin(r: np.ndarray, v: np.ndarray, omega: np.ndarray, mass: float, inertia: np.ndarray,
+                   gravity: np.ndarray, a: np.ndarray, b: np.ndarray, foot: np.ndarray) -> float:
+    """Energy margin (J) of a leg hanging clear of the terrain (its free footpad `foot` at height foot[2] > 0)
+    beside the support edge through the footpads a, b of its grounded neighbours: the work against gravity
+    to turn the capsule about that edge until the footpad touches, less the whole kinetic energy. Positive:
+    the capsule cannot bring the leg down (first order in the small turn; the kinetic energy is all counted,
+    translation included, so conservative). Not positive when the turn lowers the CG (the capsule falls onto
+    that leg) or the footpad lies on the edge's line."""
+    e = (b - a) / np.sqrt(np.sum((b - a) ** 2))
+    df = np.cross(e, foot - a)                         # footpad displacement per radian about e
+    if abs(df[2]) < 1e-12:
+        return -1.0
+    turn = foot[2] / -df[2]                            # signed angle (rad) that lands the footpad
+    rise = -(gravity @ np.cross(e, r - a)) * turn      # work against gravity per unit mass over that turn
+    kinetic = 0.5 * mass * (v @ v) + 0.5 * np.sum(inertia * omega * omega)
+    return mass * rise - kinetic
+
+
+@njit(cache=True)
 def tipped_by_energy(margins: np.ndarray) -> bool:
     """Some edge has energy to spare to topple over it (or the CG is beyond it): the report's "potentially
     unstable, continue the run", not a verdict of tumbling (see `tipped_by_nutation`)."""

@@ -133,6 +133,7 @@ def footpad_at(geo, i, length, alpha, beta, r, R):
 @njit(cache=True, inline="always")
 def free_footpad(geo, cells, i, mem, tilt, r, R):
     """Unloaded footpad in terrain axes (eq. 13): length rho less the axial permanent set, at the tilt the
-    leg had when it last left the ground."""
-    return footpad_at(geo, i, geo[2][i] - axial_set(cells, i, mem), tilt[0], tilt[1], r, R)
+    leg had when it last left the ground; tilt = (alpha, beta, held), held the axial compression beyond the
+    set the leg still had as it left (legs.lift_shape), which it keeps in the air."""
+    return footpad_at(geo, i, geo[2][i] - axial_set(cells, i, mem) - tilt[2], tilt[0], tilt[1], r, R)
 

@@ -5,8 +5,8 @@ import pytest
 
 from alightsize.loads.config import read_loads
 from conftest import EXAMPLES
-from alightsize_sim.articulated_kinematics import (ArticulatedGeometry, Unreachable, footpad, inverse, nearest_root, residual,
-                                       roots)
+from alightsize_sim.articulated_kinematics import (ArticulatedGeometry, Unreachable, footpad, inverse, nearest_root,
+                                                   residual)
 
 IN = 0.0254
 # The reference geometry (AU 44 in, AL 25 in, AS 8 in printed; AO, AE fitted, docs/articulated-geometry.md)

@@ -1,6 +1,5 @@
 """Crush cell with memory (CURVE, Fig. 19): loading, unloading spring, damper limit, set, bottoming."""
 
-import numpy as np
 import pytest
 from scipy.integrate import quad
 

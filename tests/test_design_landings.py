@@ -88,7 +88,7 @@ def test_a_design_whose_landings_fail_their_criteria_does_not_pass(design, rende
     assert [r["run_id"] for r in failing] == [r["run_id"] for r in design.landings.failing]
     assert failing                                   # measured: all 24 (onset above 1,000 g/s on axis 1)
     assert status == 1 and summary["ok"] is False and summary["landings_ok"] is False
-    assert stdout.startswith(f"3457: FAIL: ") and f"{len(failing)} of 24 landings fail their criteria" in stdout
+    assert stdout.startswith("3457: FAIL: ") and f"{len(failing)} of 24 landings fail their criteria" in stdout
     result = html.split("Result:")[1].split("</p>")[0]
     assert 'class="fail"' in result and "PASS" not in result
     assert [l["criteria_ok"] for l in summary["landings"]] == [_meets_sec_ii(r) for r in design.landings.rows]
@@ -108,7 +108,7 @@ def test_the_report_defines_every_landing_and_names_the_governing_one(design, re
     assert governing                                  # landing 3-03 governs PU1 (see above)
     for run_id in governing:
         outcome = next(r["outcome_class"] for r in design.landings.rows if r["run_id"] == run_id)
-        assert f'<a href="#landing-{run_id}">landing {run_id}</a> ({outcome.replace("_", " ")}; slope' in html
+        assert f'<a href="#landing-{run_id}">landing {run_id}</a> ({outcome.replace("_", " ")}; 35.0 ft/s down' in html
 
 
 def test_landings_declared_as_load_cases_only_say_so_and_pass_on_the_checks(tmp_path):

@@ -8,6 +8,7 @@ import sys
 from math import pi, sqrt
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import alightsize
@@ -42,7 +43,7 @@ def test_reading_runs_nothing_and_derives_the_cases():
     lander = alightsize.read_lander(LUNAR)
     assert len(lander.study.runs) == 2 * 2 * 2 * 2 * 2 + 100
     leg = lander.spec.loads.telescoping
-    assert (leg.axial_crush, leg.rotational_crush, leg.pad_lever, leg.length) == (8000.0, 1500.0, 0.8, 1.6)
+    assert (leg.axial_crush, leg.rotational_crush, leg.pad_lever, leg.length) == (8000.0, 4000.0, 0.8, 1.6)
     assert lander.scene.scene.gravity[2] == pytest.approx(-1.62)     # NASA lunar fact sheet, level nominal scene
 
 
@@ -68,6 +69,29 @@ def test_every_member_sized_to_its_factor_and_ms_given(lunar):
         assert s.factor_sized == pytest.approx(1.25, rel=1e-6) or s.sized == pytest.approx(0.004)
     for r in lunar.records:
         assert r.margin == pytest.approx(r.outcome.factor / 1.25 - 1, rel=1e-12)
+
+
+def test_level_drop_of_the_example_matches_its_closed_form():
+    """The example itself (1,500 kg, four vertical legs, the moon's 1.62 m/s^2) dropped level at 3 m/s with its
+    dampers off: each axial cell takes a quarter of the load, so the largest stroke d closes the energy balance
+    m v^2 / 2 + m g d = 4 (F r / 2 + F (d - r)) on the cell's ramp r = 0.01 m and plateau F = 8 kN, i.e.
+    d = (m v^2 / 2 + 2 F r) / (4 F - m g) = 0.233683 m. Hermite peak of an rtol 1e-10 run: within 1e-6."""
+    from alightsize.model.scene_config import read_scene
+    from alightsize_sim.landing import simulate
+    from test_landing import _hermite_peak
+    cfg = read_scene(LUNAR, {"terrain.slope": "0 deg", "initial.velocity[1]": "0 m/s", "initial.velocity[2]": "-3 m/s",
+                             "cells.axial.damping": "0 N*s/m", "cells.pad.damping": "0 N*s/m",
+                             "controls.t_final": "0.2 s", "controls.rtol": 1e-10, "controls.atol": 1e-12,
+                             "controls.max_step": "1 ms"})
+    m, g, f, r = 1500.0, 1.62, 8000.0, 0.01
+    assert cfg.scene.gravity[2] == pytest.approx(-g, abs=1e-15)
+    res = simulate(cfg.scene, cfg.controls)
+    stroke = res.y[0, 2] - res.y[:, 2]
+    x_max, _ = _hermite_peak(res.t, stroke, -res.y[:, 5])
+    exact = (0.5 * m * 3.0 ** 2 + 2 * f * r) / (4 * f - m * g)
+    assert exact == pytest.approx(0.233683, abs=1e-6)
+    assert abs(x_max - exact) / exact < 1e-6
+    assert np.nanmax(np.abs(res.deflections[:, :, 0] - stroke[:, None])) < 1e-9     # every leg strokes with the CG
 
 
 def test_landing_energy_closes(lunar):
@@ -120,9 +144,9 @@ def test_cli_design_prints_a_one_screen_summary(tmp_path):
     p = variant(tmp_path, FEW)
     out = subprocess.run([sys.executable, "-m", "alightsize", "design", str(p), "--out", str(tmp_path / "o")],
                          capture_output=True, text=True)
-    assert out.returncode in (0, 1), out.stderr
+    assert out.returncode == 0, out.stdout + out.stderr          # the shipped design meets its requirements
     head = out.stdout.splitlines()
-    assert re.match(r"lunar_lander: (PASS|FAIL): ", head[0])
+    assert re.match(r"lunar_lander: PASS: ", head[0])
     assert any(h.strip().startswith("governing check:") for h in head[1:6])
     assert any("of the capsule" in h for h in head[1:6])
     summary = json.loads((tmp_path / "o" / "summary.json").read_text())

@@ -259,3 +259,18 @@ def test_quiescence_momenta_weigh_as_the_report_in_feet():
     n1m, _ = st.quiescence_momenta(v1, w1, m, inertia, 1.0)
     assert not math.isclose(n1m / n0m, n1 / n0, rel_tol=1e-3)
     assert st.lateral_quiet(0.025 * t0, t0) and not st.lateral_quiet(0.03 * t0, t0)
+
+
+def test_hanging_leg_margin_closed_form():
+    """Edge along x through (0,0,0) and (1,0,0), CG at y = +1, z = 1, a footpad hanging h = 0.02 m up at
+    y = -1: turning about the edge by h rad (foot 1 m from the edge) lands it and lifts the CG by h (1 m on
+    the other side), so the margin is m g h less the kinetic energy (closed form, rel 1e-12). With the CG
+    on the footpad's side the turn lowers it: not clear."""
+    a, b, h = np.zeros(3), np.array([1.0, 0.0, 0.0]), 0.02
+    foot, cg = np.array([0.5, -1.0, h]), np.array([0.5, 1.0, 1.0])
+    at_rest = st.hanging_margin(cg, ZERO, ZERO, M, INERTIA, DOWN, a, b, foot)
+    assert at_rest == pytest.approx(M * G * h, rel=1e-12)
+    v, w = np.array([0.1, 0.0, 0.0]), np.array([0.0, 0.2, 0.0])
+    kinetic = 0.5 * M * 0.01 + 0.5 * INERTIA[1] * 0.04
+    assert st.hanging_margin(cg, v, w, M, INERTIA, DOWN, a, b, foot) == pytest.approx(M * G * h - kinetic, rel=1e-12)
+    assert st.hanging_margin(np.array([0.5, -0.5, 1.0]), ZERO, ZERO, M, INERTIA, DOWN, a, b, foot) < 0.0

@@ -113,7 +113,7 @@ def audit_table(records: list[CheckRecord]) -> str:
 
 def junit_xml(cfg: DesignConfig, records: list[CheckRecord]) -> str:
     failures = sum(not r.ok for r in records)
-    parts = [f'<?xml version="1.0" encoding="UTF-8"?>',
+    parts = ['<?xml version="1.0" encoding="UTF-8"?>',
              f'<testsuite name={quoteattr("alightsize audit " + cfg.configuration)} tests="{len(records)}" '
              f'failures="{failures}" errors="0">']
     for r in records:

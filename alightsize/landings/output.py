@@ -41,7 +41,7 @@ def outcome(cfg: SceneConfig, res: Result) -> tuple[str, str]:
         return "bottomed", f"leg {leg + 1} {cfg.cell_names[leg][cell]} cell stroked past its crushing plateau at {t:.4f} s"
     st = res.status
     if st == "stable":
-        return "stable", "energy criterion (eq. 89-95) satisfied for every pair of adjacent legs"
+        return "stable", "energy criterion (eq. 89-95) satisfied over the footpads on the ground, no leg left to land"
     if st == "quiet":
         return "stable", "quiescence: motion below 2.5 % of the initial momentum for TAUS periods"
     if st == "tipped":

@@ -64,8 +64,9 @@ def leg_shapes(scene: Scene, res: Result) -> np.ndarray:
         shape = start
         m = len(scene.legs[i].cells)
         for k in np.flatnonzero(res.contact[:, i] | np.r_[False, res.contact[:-1, i]]):
-            if not res.contact[k, i]:                  # lifted off after step k - 1: FORCE's stored geometry
-                shape = np.array(lift_shape(geo, i, *out[k - 1, i], y[k - 1, 0:3], R[k - 1]))
+            if not res.contact[k, i]:                  # lifted off after step k - 1: FORCE's stored geometry (a
+                # telescoping leg's held compression only places its free footpad, not needed here)
+                shape = np.array(lift_shape(geo, cells, i, mem, *out[k - 1, i], 0.0, y[k - 1, 0:3], R[k - 1]))
                 continue
             out[k, i] = leg_force(geo, cells, i, mem, shape, res.footpad[k, i], y[k, 0:3], R[k], y[k, 3:6],
                                   y[k, 10:13], defl, frc, X)[1:]

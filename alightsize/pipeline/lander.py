@@ -148,7 +148,7 @@ def _requirements(node: Node) -> Requirements:
 
 
 def _q(x: float, unit: str) -> str:
-    return f"{x!r} {unit}"
+    return f"{x:.12g} {unit}"
 
 
 def landing_cases(path: Path, name: str, req: Requirements, legs: int) -> Study:

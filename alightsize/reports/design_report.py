@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 import json
 import re
 from collections import Counter
@@ -104,12 +105,31 @@ def context(res) -> dict:
 def _conditions(c: dict, system: str) -> str:
     """"35.0 ft/s down, 15.0 ft/s horizontal downhill on a 20° slope, μ 1.5 / 1.0" (friction above 100 reads
     "non-slip"; the direction is downhill, uphill or across within 45° of each)."""
-    mu = "non-slip" if c["mu_static"] >= 100 else f"μ {c['mu_static']:g} / {c['mu_dynamic']:g}"
+    mu = "non-slip" if c["mu_static"] >= 100 else f"μ {c['mu_static']:.3g} / {c['mu_dynamic']:.3g}"
     heading = c.get("from_downhill_deg")
-    way = "" if heading is None else " downhill" if heading < 45 else " uphill" if heading > 135 else " across"
+    horizontal = c["horizontal_m_s"] if abs(c["horizontal_m_s"]) > 1e-9 else 0.0      # round-off of a level approach
+    way = ("" if heading is None or not horizontal else " downhill" if heading < 45 else " uphill" if heading > 135
+           else " across")
     ground = f"on a {c['slope_deg']:.0f}° slope" if round(c["slope_deg"]) else "on level ground"
-    return (f"{fmt(c['vertical_m_s'], 'velocity', system, 3)} down, {fmt(c['horizontal_m_s'], 'velocity', system, 3)} "
+    return (f"{fmt(c['vertical_m_s'], 'velocity', system, 3)} down, {fmt(horizontal, 'velocity', system, 3)} "
             f"horizontal{way} {ground}, {mu}")
+
+
+def _parameter(value) -> str:
+    """A landing parameter as the report shows it: numbers to 4 significant digits ("-2.57 m/s"), a per-cell
+    table as its range ("0.845 to 1.16")."""
+    if isinstance(value, list):
+        flat = list(itertools.chain.from_iterable(v if isinstance(v, list) else [v] for v in value))
+        return f"{min(flat):.3g} to {max(flat):.3g}" if flat else "[]"
+    if isinstance(value, float):
+        return f"{value:.4g}"
+    if isinstance(value, str):
+        number, _, unit = value.partition(" ")
+        try:
+            return f"{float(number):.4g} {unit}".rstrip()
+        except ValueError:
+            return value
+    return str(value)
 
 
 def landing_rows(cfg, system: str) -> dict[str, dict]:
@@ -121,7 +141,7 @@ def landing_rows(cfg, system: str) -> dict[str, dict]:
         params = {k: v for k, v in json.loads(r["params_json"]).items() if k != "scene"}
         out[r["run_id"]] = {
             "id": r["run_id"], "scene": r["scene"], "anchor": "landing-" + re.sub(r"[^A-Za-z0-9_-]", "_", r["run_id"]),
-            "parameters": ", ".join(f"{k.split('.')[-1]} {v}" for k, v in params.items()),
+            "parameters": ", ".join(f"{k.split('.')[-1].replace('_', ' ')} {_parameter(v)}" for k, v in params.items()),
             "conditions": _conditions(c, system), "outcome": r["outcome"],
             "outcome_class": r["outcome_class"].replace("_", " "),
             "peak": [f"{r[f'peak_xdd{i}_g']:.2f}" for i in (1, 2, 3)],
