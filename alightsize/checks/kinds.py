@@ -222,7 +222,7 @@ def _column(p, s, mat) -> Outcome:
                  Step("Critical column stress, Johnson parabola (L/k below the transition)", "σcr",
                       "{Fcy} - ({Fcy} / 2π)² ({L/k})² / {E}", ek + (("L/k", lk, "dimensionless"),), crit, "stress")
                  if which == "johnson" else
-                 Step("Critical column stress, Euler (L/k at or above the transition)", "σcr", "π² {E} / {L/k}²",
+                 Step("Critical column stress, Euler (L/k at or above the transition)", "σcr", "π² {E} / ({L/k})²",
                       (("E", e, "stress"), ("L/k", lk, "dimensionless")), crit, "stress"))
         return Outcome("column_buckling", p["P"], sig, crit, stress.design_factor(crit, sig), steps)
     crit = stress.euler_stress(e, p["L"], k)
