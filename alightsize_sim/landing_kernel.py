@@ -311,8 +311,8 @@ def _hanging_clear(geo, cells, mass, inertia, gravity, order, mem, contact, P, s
         while not contact[order[b]]:
             b = (b + 1) % n
         foot = np.array(free_footpad(geo, cells, i, mem[i], shape[i], y[0:3], R))
-        if not foot[2] > 0.0 or hanging_margin(y[0:3], y[3:6], y[10:13], mass, inertia, gravity, P[order[a]],
-                                               P[order[b]], foot) <= 0.0:
+        if not (foot[2] > 0.0 and hanging_margin(y[0:3], y[3:6], y[10:13], mass, inertia, gravity, P[order[a]],
+                                                 P[order[b]], foot) > 0.0):   # NaN is not clear
             return False
     return True
 

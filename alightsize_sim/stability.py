@@ -187,10 +187,13 @@ def hanging_margin(r: np.ndarray, v: np.ndarray, omega: np.ndarray, mass: float,
     to turn the capsule about that edge until the footpad touches, less the whole kinetic energy. Positive:
     the capsule cannot bring the leg down (first order in the small turn; the kinetic energy is all counted,
     translation included, so conservative). Not positive when the turn lowers the CG (the capsule falls onto
-    that leg) or the footpad lies on the edge's line."""
-    e = (b - a) / np.sqrt(np.sum((b - a) ** 2))
+    that leg), the footpad lies on the edge's line or a and b coincide."""
+    span = np.sqrt(np.sum((b - a) ** 2))
+    if not span > 0.0:
+        return -1.0
+    e = (b - a) / span
     df = np.cross(e, foot - a)                         # footpad displacement per radian about e
-    if abs(df[2]) < 1e-12:
+    if not abs(df[2]) >= 1e-12:
         return -1.0
     turn = foot[2] / -df[2]                            # signed angle (rad) that lands the footpad
     rise = -(gravity @ np.cross(e, r - a)) * turn      # work against gravity per unit mass over that turn

@@ -274,3 +274,10 @@ def test_hanging_leg_margin_closed_form():
     kinetic = 0.5 * M * 0.01 + 0.5 * INERTIA[1] * 0.04
     assert st.hanging_margin(cg, v, w, M, INERTIA, DOWN, a, b, foot) == pytest.approx(M * G * h - kinetic, rel=1e-12)
     assert st.hanging_margin(np.array([0.5, -0.5, 1.0]), ZERO, ZERO, M, INERTIA, DOWN, a, b, foot) < 0.0
+
+
+def test_hanging_leg_margin_of_a_degenerate_edge_is_not_clear():
+    """Two grounded footpads at one point give no edge to turn about: never judged clear (no NaN)."""
+    a = np.array([0.3, 0.2, 0.0])
+    assert st.hanging_margin(np.array([0.0, 0.0, 1.0]), ZERO, ZERO, M, INERTIA, DOWN, a, a.copy(),
+                             np.array([1.0, 0.0, 0.05])) == -1.0

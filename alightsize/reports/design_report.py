@@ -120,7 +120,9 @@ def _parameter(value) -> str:
     table as its range ("0.845 to 1.16")."""
     if isinstance(value, list):
         flat = list(itertools.chain.from_iterable(v if isinstance(v, list) else [v] for v in value))
-        return f"{min(flat):.3g} to {max(flat):.3g}" if flat else "[]"
+        if flat and all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in flat):
+            return f"{min(flat):.3g} to {max(flat):.3g}"
+        return str(value)
     if isinstance(value, float):
         return f"{value:.4g}"
     if isinstance(value, str):
