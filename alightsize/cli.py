@@ -1,4 +1,4 @@
-"""Command line: `alightsize design | audit | loads | simulate | sweep | bench | scale | reports` (see docs/contracts.md). Exit 0 ok, 1 check failed,
+"""Command line: `alightsize design | audit | loads | simulate | sweep | synthesize | bench | scale | reports` (see docs/contracts.md). Exit 0 ok, 1 check failed,
 2 bad input, 3 internal error."""
 
 from __future__ import annotations
@@ -85,10 +85,7 @@ def _sweep(args) -> int:
     from alightsize.reports.sweep_report import write_results
     study = read_study(args.study)
     out = Path(args.out)
-    backend = "serial" if args.serial else "dask" if (args.scheduler or args.dask_local) else "pool"
-    workers = args.dask_local or args.workers
-    if workers is not None and workers < 1:
-        raise InputError("(command line)", "--workers/--dask-local", "a worker count >= 1", str(workers))
+    backend, workers = _backend(args)
     print(f"{study.name}: {len(study.runs)} runs -> {out / 'runs.sqlite'} ({backend}"
           f"{'' if backend == 'serial' else f', {workers or os.cpu_count()} workers' if not args.scheduler else f' at {args.scheduler}'})",
           flush=True)
@@ -105,6 +102,60 @@ def _sweep(args) -> int:
     print("wrote " + ", ".join(str(f) for f in files))
     failed = json.loads((out / "outcomes.json").read_text())["failed"]
     return 1 if (args.require_success and failed) else 0
+
+
+def _backend(args) -> tuple[str, int | None]:
+    """(backend, workers) of the --serial/--workers/--scheduler/--dask-local options."""
+    backend = "serial" if args.serial else "dask" if (args.scheduler or args.dask_local) else "pool"
+    workers = args.dask_local or args.workers
+    if workers is not None and workers < 1:
+        raise InputError("(command line)", "--workers/--dask-local", "a worker count >= 1", str(workers))
+    return backend, workers
+
+
+def _start(items: list[str], path: str) -> dict[str, float]:
+    """--start KEY=VALUE ... as SI floats of the free parameters' dimensions."""
+    from alightsize.common.units import registry
+    out = {}
+    for item in items:
+        key, sep, value = item.partition("=")
+        try:
+            if not sep:
+                raise ValueError
+            out[key.strip()] = float(registry().Quantity(value.strip()).to_base_units().magnitude)
+        except Exception:                              # noqa: BLE001 - pint raises many kinds on garbage
+            raise InputError("(command line)", "--start", "KEY=VALUE with a unit, e.g. cells.axial.crush_force=4kN",
+                             repr(item)) from None
+    return out
+
+
+def _synthesize(args) -> int:
+    from alightsize.reports.synthesis_report import write_synthesis
+    from alightsize.synthesis.search import synthesize
+    backend, workers = _backend(args)
+    out = Path(args.out)
+    try:
+        res = synthesize(args.lander, out, _start(args.start, args.lander), not args.no_trade, backend, workers,
+                         args.scheduler, log=lambda msg: print(msg, flush=True))
+    except KeyboardInterrupt:
+        print(f"alightsize: interrupted; every landing and candidate is stored in {out / 'runs.sqlite'}: "
+              "run the same command again to resume", file=sys.stderr)
+        return 130
+    files = write_synthesis(res, out)
+    b, st = res.best, res.stats
+    every = res.check_rates[-1] if res.check_rates else None
+    print(f"{'PASS' if res.ok else 'FAIL'}: " + (f"lightest feasible system {100 * b.fraction:.3f} % of the capsule "
+          f"({b.weight_kg:.4g} kg; start {100 * res.start.fraction:.3f} %)" if b.feasible
+          else "no candidate met every criterion within the bounds"))
+    if every is not None:
+        print(f"  fresh check: {every.passed} of {every.n} landings meet every criterion "
+              f"(95 % interval {every.low:.4f} - {every.high:.4f})")
+    for p, v in zip(res.spec.free, b.x):
+        print(f"  {p.key} = {p.show(v)}")
+    print(f"  {st['candidates']} candidates, {st['landings_computed']} landings computed, "
+          f"{st['landings_stored']} found stored, {st['wall_s']:.0f} s")
+    print(f"wrote {', '.join(str(f) for f in files[:4])} and charts; the chosen design in {out / 'chosen'}")
+    return 0 if res.ok else 1
 
 
 def _bench(args) -> int:
@@ -150,6 +201,15 @@ def _reports(args) -> int:
     return 0
 
 
+def _executor_options(p: argparse.ArgumentParser) -> None:
+    """--out and where the landings run (the sweep executors)."""
+    p.add_argument("--out", required=True, help="output folder (runs.sqlite is kept there and resumed)")
+    p.add_argument("--workers", type=int, help="local process pool size (default: all cores)")
+    p.add_argument("--serial", action="store_true", help="run in this process, one landing at a time")
+    p.add_argument("--scheduler", help="address of a Dask distributed scheduler to run on")
+    p.add_argument("--dask-local", type=int, metavar="N", help="start a local Dask cluster of N workers")
+
+
 def parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="alightsize", description=__doc__.split("(")[0].strip())
     p.add_argument("--version", action="version", version=f"alightsize {__version__}")
@@ -175,14 +235,17 @@ def parser() -> argparse.ArgumentParser:
     si.set_defaults(run=_simulate)
     sw = sub.add_parser("sweep", help="a parametric or Monte Carlo study of landings (resumable run store)")
     sw.add_argument("study")
-    sw.add_argument("--out", required=True, help="output folder (runs.sqlite is kept there and resumed)")
-    sw.add_argument("--workers", type=int, help="local process pool size (default: all cores)")
-    sw.add_argument("--serial", action="store_true", help="run in this process, one landing at a time")
-    sw.add_argument("--scheduler", help="address of a Dask distributed scheduler to run on")
-    sw.add_argument("--dask-local", type=int, metavar="N", help="start a local Dask cluster of N workers")
+    _executor_options(sw)
     sw.add_argument("--quiet", action="store_true", help="no progress bar")
     sw.add_argument("--require-success", action="store_true", help="exit 1 when a run failed")
     sw.set_defaults(run=_sweep)
+    sy = sub.add_parser("synthesize", help="the lightest landing system meeting a lander file's requirements")
+    sy.add_argument("lander")
+    _executor_options(sy)
+    sy.add_argument("--start", action="append", default=[], metavar="KEY=VALUE",
+                    help="start a free parameter elsewhere than the file's value (repeatable)")
+    sy.add_argument("--no-trade", action="store_true", help="skip the trade curves")
+    sy.set_defaults(run=_synthesize)
     b = sub.add_parser("bench", help="landing simulator speed against error, with the solve_ivp-style baseline")
     b.add_argument("--out", required=True, help="output folder")
     b.add_argument("--quick", action="store_true", help="fewer scenes and settings")

@@ -42,6 +42,21 @@ class Criteria:
         return out
 
 
+    def kinds(self) -> dict[str, str]:
+        """Every criterion: its violation as `violation_kinds` names it ("XDD(3) > 20 g") -> the requirement
+        ("XDD(3) <= 20 g")."""
+        out = {f"XDD({i + 1}) {'onset ' if unit == 'g/s' else ''}> {cap:g} {unit}":
+               f"XDD({i + 1}) {'onset ' if unit == 'g/s' else ''}<= {cap:g} {unit}"
+               for lim, unit in ((self.max_xdd_g, "g"), (self.max_onset_g_s, "g/s")) for i, cap in enumerate(lim or ())}
+        flags = ((self.no_bottoming, "a cell bottomed", "no cell bottoms"),
+                 (self.no_tumbling, "the capsule tumbled", "no tumbling"),
+                 (self.no_body_contact, "the body struck the terrain", "no body contact"))
+        out.update((kind, text) for on, kind, text in flags if on)
+        out.update({"the landing ended failed": "no numerical failure",
+                    "the landing ended time_out": "at rest within t_final"})
+        return out
+
+
 def _triple(node: Node, key: str) -> tuple[float, float, float]:
     v = node.raw(key)
     if not (isinstance(v, list) and len(v) == 3 and all(isinstance(x, (int, float)) and not isinstance(x, bool)

@@ -62,11 +62,19 @@ class RunStore:
                             [row[k] for k in keys])
 
     def rows(self, run_ids: list[str] | None = None) -> list[dict]:
-        """Stored runs as dicts (all, or those of `run_ids` in that order)."""
-        cur = self.db.execute("SELECT * FROM runs")
-        names = [d[0] for d in cur.description]
-        found = {r[0]: dict(zip(names, r)) for r in cur}
-        return list(found.values()) if run_ids is None else [found[i] for i in run_ids if i in found]
+        """Stored runs as dicts (all, or those of `run_ids` in that order, looked up by key)."""
+        if run_ids is None:
+            cur = self.db.execute("SELECT * FROM runs")
+            names = [d[0] for d in cur.description]
+            return [dict(zip(names, r)) for r in cur]
+        found = {}
+        wanted = list(dict.fromkeys(run_ids))
+        for k in range(0, len(wanted), 500):             # SQLite's bound-parameter limit
+            chunk = wanted[k:k + 500]
+            cur = self.db.execute(f"SELECT * FROM runs WHERE run_id IN ({', '.join('?' * len(chunk))})", chunk)
+            names = [d[0] for d in cur.description]
+            found.update((r[0], dict(zip(names, r))) for r in cur)
+        return [found[i] for i in run_ids if i in found]
 
     def close(self) -> None:
         self.db.close()

@@ -220,11 +220,20 @@ def run_sweep(study: Study, out: Path, backend: str = "pool", workers: int | Non
     """Run every run of the study not already done into out/runs.sqlite; return the counts. With
     `member_loads` each run also stores its member-load extremes (`member_loads_json`, e.g.
     alightsize.loads.histories.dynamic_envelope with the leg's truss angles)."""
+    tasks = [task_of(study, r, out, member_loads) for r in study.runs]
+    meta = {"study": study.name, "title": study.title, "seed": study.seed, "study_file": str(study.path)}
+    return run_tasks(tasks, out, backend, workers, scheduler, quiet, on_row, meta)
+
+
+def run_tasks(tasks: list[dict], out: Path, backend: str = "pool", workers: int | None = None,
+              scheduler: str | None = None, quiet: bool = False, on_row: Callable[[dict], None] | None = None,
+              meta: dict | None = None) -> SweepStats:
+    """Run the tasks (`task_of`, ids unique) not already done into out/runs.sqlite; return the counts."""
     out.mkdir(parents=True, exist_ok=True)
     workers = workers or os.cpu_count() or 1
     store = RunStore(out / "runs.sqlite")
-    store.set_meta(study=study.name, title=study.title, seed=study.seed, study_file=str(study.path))
-    tasks = [task_of(study, r, out, member_loads) for r in study.runs]
+    if meta:
+        store.set_meta(**meta)
     todo, reused = _stored(store, tasks)
     t0 = time.perf_counter()
     runner: Iterable[dict]
@@ -261,10 +270,10 @@ def _stored(store: RunStore, tasks: list[dict]) -> tuple[list[dict], int]:
     done = store.done()
     by_hash = {h: rid for rid, h in sorted(done.items())}
     ids = {t["run_id"] for t in tasks}
-    rows = {r["run_id"]: r for r in store.rows(list(done))}
+    wanted = [t["run_id"] if done.get(t["run_id"]) == t["scene_hash"] else by_hash.get(t["scene_hash"]) for t in tasks]
+    rows = {r["run_id"]: r for r in store.rows([w for w in wanted if w is not None])}
     todo, reused = [], 0
-    for t in tasks:
-        old = t["run_id"] if done.get(t["run_id"]) == t["scene_hash"] else by_hash.get(t["scene_hash"])
+    for t, old in zip(tasks, wanted):
         if old is None:
             todo.append(t)
             continue

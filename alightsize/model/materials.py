@@ -9,7 +9,7 @@ from alightsize.common.config import Node, load_toml
 from alightsize.common.errors import InputError
 from alightsize.common.resources import data_dir
 
-_PROPS = {"yield_strength": "stress", "density": "density", "elastic_modulus": "stress"}
+_PROPS = {"yield_strength": "stress", "density": "density", "elastic_modulus": "stress", "crush_strength": "stress"}
 
 
 @dataclass(frozen=True)
@@ -22,6 +22,8 @@ class Material:
     yield_strength: float | None = None
     elastic_modulus: float | None = None
     poisson_m: float | None = None
+    crush_strength: float | None = None        # crushable cores: the crushing stress
+    stroke_fraction: float | None = None       # crushable cores: usable stroke / core length
     source: dict = field(default_factory=dict)
 
 
@@ -31,11 +33,14 @@ def read_material(path: str | Path) -> Material:
     if values["density"] is None:
         raise node.error("density", "a density like \"0.100 lb/in^3\"", "nothing")
     m = node.number("poisson_m", default=None)
+    eta = node.number("stroke_fraction", default=None)
+    if eta is not None and not 0 < eta <= 1:
+        raise node.error("stroke_fraction", "the usable stroke as a fraction of the core length, in (0, 1]", repr(eta))
     src = node.table("source", optional=True)
     source = {k: src.string(k) for k in list(src.data)} if src else {}
     if src:
         src.finish()
-    mat = Material(Path(path).stem, node.string("name"), poisson_m=m, source=source, **values)
+    mat = Material(Path(path).stem, node.string("name"), poisson_m=m, stroke_fraction=eta, source=source, **values)
     node.finish()
     return mat
 

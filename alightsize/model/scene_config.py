@@ -188,7 +188,7 @@ def _merge(base: dict, over: dict) -> dict:
 
 
 # tables of a lander file (alightsize.pipeline.lander) that do not describe the landing itself
-LANDER_ONLY = ("lander", "structure", "members", "item", "requirements", "report")
+LANDER_ONLY = ("lander", "structure", "members", "item", "requirements", "report", "synthesis")
 
 
 def _upper(value):

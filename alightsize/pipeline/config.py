@@ -12,7 +12,7 @@ from alightsize.loads.config import LoadsConfig, read_loads
 from alightsize.loads.quasi_static import LoadReference, LoadsResult, attach, run_loads, validate_references
 from alightsize.model.materials import Material, library
 from alightsize.pipeline.items import Item, read_item
-from alightsize.pipeline.landings import Landings, LandingSpec, read_landing_spec, run_landings
+from alightsize.pipeline.landings import Landings, LandingSpec, landed, read_landing_spec, run_landings
 
 UNIT_SYSTEMS = ("US", "SI")
 
@@ -114,13 +114,16 @@ def _loads_config(root: Node, path: Path) -> LoadsConfig | None:
     return read_loads(file)
 
 
-def prepare(spec: DesignSpec, landings_dir: Path | None = None, progress: bool = False) -> DesignConfig:
+def prepare(spec: DesignSpec, landings_dir: Path | None = None, progress: bool = False,
+            rows: tuple[dict, ...] | None = None) -> DesignConfig:
     """Compute the quasi-static envelopes, run the landing cases (into `landings_dir`, resumable; a temporary
-    folder when None), merge their member loads and resolve every check's load."""
+    folder when None; or take their stored `rows`, one per run in study order), merge their member loads and
+    resolve every check's load."""
     loads = run_loads(spec.loads) if spec.loads is not None else None
     landings = None
     if spec.landings is not None:
-        loads, landings = run_landings(spec.landings, loads, landings_dir, progress)
+        loads, landings = (landed(spec.landings, loads, rows) if rows is not None
+                           else run_landings(spec.landings, loads, landings_dir, progress))
     root = Node(spec.path, "", {})
     if loads is not None:
         attach(root, loads)

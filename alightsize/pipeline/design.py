@@ -140,11 +140,12 @@ def criteria_counts(rows) -> str:
     return ", ".join(f"{k} {n}" for k, n in kinds.most_common())
 
 
-def run_design(cfg: DesignConfig | DesignSpec, landings_dir=None, progress: bool = False) -> DesignResult:
+def run_design(cfg: DesignConfig | DesignSpec, landings_dir=None, progress: bool = False,
+               rows: tuple[dict, ...] | None = None) -> DesignResult:
     """Size, check and weigh a design; a design as read (`DesignSpec`) is prepared first (envelopes,
-    landings into `landings_dir`, loads resolved)."""
+    landings into `landings_dir` or from their stored `rows`, loads resolved)."""
     if isinstance(cfg, DesignSpec):
-        cfg = prepare(cfg, landings_dir, progress)
+        cfg = prepare(cfg, landings_dir, progress, rows)
     sizings, items = [], []
     for item in cfg.items:
         if item.size is not None:

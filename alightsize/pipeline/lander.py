@@ -151,10 +151,12 @@ def _q(x: float, unit: str) -> str:
     return f"{x:.12g} {unit}"
 
 
-def landing_cases(path: Path, name: str, req: Requirements, legs: int) -> Study:
+def landing_cases(path: Path, name: str, req: Requirements, legs: int, base: dict | None = None) -> Study:
     """The envelope's corners (each range at both ends, slope, inclination and roll rate at either sign, a leg
     leading or two legs straddling the velocity) and `samples` seeded Monte Carlo landings drawn uniformly
-    over the envelope (heading, roll and, with cell_scatter, every cell's crushing force as well)."""
+    over the envelope (heading, roll and, with cell_scatter, every cell's crushing force as well); every run
+    lands the lander file's scene with the overrides `base` (a design variant) under its own."""
+    base = dict(base or {})
     e = req.envelope
     axes: dict[str, list] = {"initial.velocity[2]": [_q(-v, "m/s") for v in sorted(set(e.vertical))],
                              "initial.velocity[1]": [_q(h, "m/s") for h in sorted(set(e.horizontal))],
@@ -163,7 +165,7 @@ def landing_cases(path: Path, name: str, req: Requirements, legs: int) -> Study:
                              ("initial.rates[2]", e.roll_rate, "rad/s")):
         if value > 0:
             axes[key] = [_q(-value, unit), _q(value, unit)]
-    fixed = {}
+    fixed = dict(base)
     if e.friction is not None:
         fixed["terrain.mu_static"] = e.friction[1]
         axes["terrain.mu_dynamic"] = sorted(set(e.friction))
@@ -236,11 +238,47 @@ def _loads_config(root: Node, path: Path, name: str, scene: SceneConfig, units: 
     return cfg, (own_name, *(c[0] for c in cfg.combined))
 
 
-def read_lander(path: str | Path) -> Lander:
-    """Read and validate a lander file; any problem is an InputError naming file, key path, what was expected
-    and what was found. Nothing is computed (`alightsize.design` runs the analyses)."""
+def _cell_curve(root: Node, cell: str) -> tuple[float, float]:
+    """(crushing force, stroke to bottoming) of a cell of the lander file: the largest force before the
+    bottoming segment and the deflection where that segment starts."""
+    node = root.table("cells").table(cell)
+    force = [node.parse_quantity(f"force[{i}]", v, "force", positive=False) for i, v in enumerate(node.raw("force"))]
+    defl = [node.parse_quantity(f"deflection[{i}]", v, "length", positive=False)
+            for i, v in enumerate(node.raw("deflection"))]
+    return max(force[:-1]), defl[-2]
+
+
+def _crushable(node: Node, root: Node, mats: dict) -> Node:
+    """An item weighed as a cell's crushable core, `weight = {method = "crushable", cell = NAME}`, as the prism
+    it is: area = crushing force / crush strength, length = stroke / usable stroke fraction (App. V)."""
+    w = node.data.get("weight")
+    if not (isinstance(w, dict) and w.get("method") == "crushable"):
+        return node
+    wn = Node(node.file, f"{node.path}.weight", dict(w), root.context)
+    wn.allow(("method", "cell", "allowance", "extra", "label", "note"))
+    cell = wn.string("cell")
+    if cell not in (root.data.get("cells") or {}):
+        raise wn.error("cell", "the name of a [cells.NAME] table", repr(cell))
+    mat = mats.get(str(node.data.get("material")))
+    if mat is None or mat.crush_strength is None or mat.stroke_fraction is None:
+        raise node.error("material", "a crushable material (with crush_strength and stroke_fraction)",
+                         repr(node.data.get("material")))
+    force, stroke = _cell_curve(root, cell)
+    prism = {k: v for k, v in w.items() if k not in ("method", "cell")}
+    prism.update(method="prism", area=f"{force / mat.crush_strength!r} m^2", length=f"{stroke / mat.stroke_fraction!r} m")
+    prism.setdefault("note", f"cell {cell}: area = crushing force / crush strength, length = stroke / {mat.stroke_fraction:g}")
+    return Node(node.file, node.path, {**node.data, "weight": prism}, root.context)
+
+
+def read_lander(path: str | Path, overrides: dict | None = None) -> Lander:
+    """Read and validate a lander file, with `overrides` (dotted key path -> TOML value, e.g.
+    {"legs.radius": "2 m"}) applied first; any problem is an InputError naming file, key path, what was
+    expected and what was found. Nothing is computed (`alightsize.design` runs the analyses)."""
     path = Path(path)
     root = load_toml(path)
+    for key, value in (overrides or {}).items():
+        root.set_path(key, value)
+    scene_over = {k: v for k, v in (overrides or {}).items() if k.split(".")[0] in SCENE_TABLES}
     root.allow((*SCENE_TABLES, *LANDER_ONLY))
     head = root.table("lander")
     head.allow(("name", "title", "gravity", "rules", "materials", "note"))
@@ -257,7 +295,8 @@ def read_lander(path: str | Path) -> Lander:
         read_gravity(head, "gravity")             # checked here, so an error names [lander], not the scene
     head.string("note", "")
     head.finish()
-    scene = read_scene(path)
+    scene = read_scene(path, scene_over)
+    root.raw("synthesis", None)                   # alightsize.synthesis reads it
     for t in SCENE_TABLES:
         root.raw(t, None)
     rep = root.table("report", optional=True)
@@ -276,13 +315,13 @@ def read_lander(path: str | Path) -> Lander:
         nodes.append(Node(root.file, m.path, data, root.context))
     if members:
         members.finish()
-    nodes += root.tables("item", optional=True, label="name")
+    nodes += [_crushable(n, root, mats) for n in root.tables("item", optional=True, label="name")]
     if not nodes:
         raise root.error("members", "at least one [members.NAME] table or [[item]]", "neither")
     validate_references(root, loads)
     read_items(tuple(nodes), mats, req.required, root)
     root.finish()
-    study = landing_cases(path, name, req, len(scene.scene.legs))
+    study = landing_cases(path, name, req, len(scene.scene.legs), scene_over)
     member_loads = (partial(telescoping_dynamic_envelope, leg=loads.telescoping) if loads.telescoping
                     else partial(dynamic_envelope, truss=loads.cases[0].truss))
     landings = LandingSpec(study, envelopes, "criteria", member_loads)

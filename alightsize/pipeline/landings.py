@@ -19,6 +19,7 @@ from functools import partial
 import json
 import tempfile
 from dataclasses import dataclass
+from functools import cached_property
 from math import radians
 from pathlib import Path
 from typing import Callable
@@ -45,7 +46,11 @@ class Landings:
     rows: tuple[dict, ...]            # the stored runs, study order
     quasi_static: LoadsResult         # the envelopes before the landings joined them
     role: str = "criteria"            # "criteria": the design passes only if every landing meets them
-    conditions: tuple[dict, ...] = () # per run: scene_config.impact_conditions
+
+    @cached_property
+    def conditions(self) -> tuple[dict, ...]:
+        """Per run: scene_config.impact_conditions (read when a report asks)."""
+        return tuple(impact_conditions(read_scene(r.scene, r.overrides)) for r in self.study.runs)
 
     @property
     def failing(self) -> tuple[dict, ...]:
@@ -150,12 +155,16 @@ def run_landings(spec: LandingSpec, loads: LoadsResult, out: Path | None,
         store = RunStore(folder / "runs.sqlite")
         rows = tuple(store.rows([r.run_id for r in study.runs]))
         store.close()
+    return landed(spec, loads, rows)
+
+
+def landed(spec: LandingSpec, loads: LoadsResult, rows: tuple[dict, ...]) -> tuple[LoadsResult, Landings]:
+    """The landings of stored rows (one per run of the study, in its order) merged into the envelopes."""
     failed = [r for r in rows if r["status"] != "done"]
     if failed:
-        raise InputError(str(study.path), "landings", "landing cases that all run",
+        raise InputError(str(spec.study.path), "landings", "landing cases that all run",
                          f"runs {', '.join(r['run_id'] for r in failed)} failed: {failed[0]['message']}")
-    conditions = tuple(impact_conditions(read_scene(r.scene, r.overrides)) for r in study.runs)
-    return merge(loads, rows, spec.envelopes), Landings(study, spec.envelopes, rows, loads, spec.role, conditions)
+    return merge(loads, rows, spec.envelopes), Landings(spec.study, spec.envelopes, rows, loads, spec.role)
 
 
 def quasi_static_load(landings: Landings, envelope: str, member: str, sense: str) -> float | None:

@@ -1,0 +1,130 @@
+"""Landing-system synthesis: the free parameters' mapping and the crushable-core weight (closed forms), the
+Wilson interval (closed forms), and a small synthesis of the lunar example that must find a feasible design
+no heavier than its start, give the same result twice and resume an interrupted search without re-landing
+a stored candidate."""
+
+from __future__ import annotations
+
+import sqlite3
+from math import pi
+from pathlib import Path
+
+import pytest
+
+from alightsize.cli import main
+from alightsize.common.config import load_toml
+from alightsize.landings.probability import Z95, wilson_interval
+from alightsize.model.materials import library
+from alightsize.pipeline.lander import read_lander
+from alightsize.synthesis.search import synthesize
+from alightsize.synthesis.spec import FreeParameter, overrides, read_synthesis
+
+EXAMPLE = Path(__file__).parents[1] / "examples" / "lunar_lander.toml"
+
+# A level lunar drop at 3 m/s, two corners (a leg leading, two straddling) and two Monte Carlo landings per
+# candidate; one free parameter and a tiny budget, so the whole search runs in seconds.
+SMALL = """
+[requirements.envelope]
+vertical_speed = "3 m/s"
+
+[requirements.monte_carlo]
+samples = 2
+seed = 5
+
+[synthesis]
+seed = 11
+generations = 2
+population = 3
+check_samples = 4
+
+[synthesis.free]
+"cells.axial.crush_force" = ["4 kN", "16 kN"]
+"legs.radius" = ["1.6 m", "3.2 m"]
+"""
+
+
+def _small(tmp_path: Path) -> Path:
+    text = EXAMPLE.read_text()
+    text = text[:text.index("[requirements.envelope]")] + SMALL
+    text = text.replace('t_final = "10 s"', 't_final = "3 s"')
+    path = tmp_path / "small.toml"
+    path.write_text(text)
+    return path
+
+
+def test_wilson_closed_forms():
+    """k = n: (n / (n + z²), 1); k = 0: (0, z² / (n + z²)); k = n/2: centred on 1/2 with half-width
+    z sqrt(n/4 + z²/4) / (n + z²) (Wilson 1927); exact to rounding (1e-15)."""
+    n, z2 = 1000, Z95 ** 2
+    assert wilson_interval(n, n) == pytest.approx((n / (n + z2), 1.0), abs=1e-15)
+    assert wilson_interval(0, n) == pytest.approx((0.0, z2 / (n + z2)), abs=1e-15)
+    lo, hi = wilson_interval(50, 100)
+    half = Z95 * (100 / 4 + z2 / 4) ** 0.5 / (100 + z2)
+    assert (lo, hi) == pytest.approx((0.5 - half, 0.5 + half), abs=1e-15)
+    assert wilson_interval(0, 0) == (0.0, 1.0)
+
+
+def test_free_cell_parameters_and_crushable_weight():
+    """Setting a cell's crushing force and stroke scales its curve so that its plateau and bottoming stroke
+    are those values (1e-12), and the crushable core then weighs rho F s / (sigma_c eta) (App. V prism)."""
+    spec = read_synthesis(EXAMPLE)
+    raw = load_toml(EXAMPLE).data
+    stroke = FreeParameter("cells.axial.stroke", 0.2, 0.8, 0.45, "m", 1.0)
+    free = (spec.free[0], stroke)
+    over = overrides(free, [12e3, 0.6], raw)
+    lander = read_lander(EXAMPLE, over)
+    curve = lander.scene.scene.legs[0].axial.curve
+    assert max(curve.force[:-1]) == pytest.approx(12e3, rel=1e-12)
+    assert curve.deflection[-2] == pytest.approx(0.6, rel=1e-12)
+    hc = library()["al-honeycomb"]
+    node = next(n for n in lander.spec.items if n.data["name"] == "Axial honeycomb")
+    w = node.data["weight"]
+    area, length = (float(w[k].split()[0]) for k in ("area", "length"))
+    assert area * length * hc.density == pytest.approx(hc.density * 12e3 * 0.6 / (hc.crush_strength * hc.stroke_fraction),
+                                                       rel=1e-12)
+    # the report's own axial core: 3750 lbf over a 1.074 in diameter is the material's crush strength (0.1 %,
+    # the printed strength is rounded to 4 digits)
+    assert 3750 * 4.4482216 / (pi / 4 * (1.074 * 0.0254) ** 2) == pytest.approx(hc.crush_strength, rel=1e-3)
+
+
+def test_small_synthesis_is_feasible_reproducible_and_resumes(tmp_path):
+    """The winner meets every criterion on its sample and on the fresh check sample, is no heavier than the
+    start, and a second run (same seed) lands nothing new and chooses the same design bit for bit. A search
+    interrupted after its first generation resumes: the rerun lands only what was not stored and ends on
+    the same design."""
+    lander = _small(tmp_path)
+    res = synthesize(lander, tmp_path / "a", backend="serial")
+    assert res.best.feasible and res.ok
+    assert res.best.objective <= res.start.objective
+    assert all(r.passed == r.n for r in res.rates + res.check_rates)
+    assert len(res.check_rows) == 4
+    again = synthesize(lander, tmp_path / "a", backend="serial")
+    assert again.stats["landings_computed"] == 0
+    assert again.best.x == res.best.x
+
+    class Stop(Exception):
+        pass
+
+    def stop_after_first(msg: str) -> None:
+        if msg.startswith("  generation 1"):
+            raise Stop
+    with pytest.raises(Stop):
+        synthesize(lander, tmp_path / "b", backend="serial", log=stop_after_first)
+    with sqlite3.connect(tmp_path / "b" / "runs.sqlite") as db:
+        landed_before = db.execute("SELECT COUNT(*) FROM runs").fetchone()[0]
+    resumed = synthesize(lander, tmp_path / "b", backend="serial")
+    assert resumed.best.x == res.best.x
+    assert 0 < landed_before < res.stats["landings_computed"]
+    assert resumed.stats["landings_computed"] == res.stats["landings_computed"] - landed_before
+
+
+def test_synthesize_cli_writes_report_and_rejects_bad_bounds(tmp_path, capsys):
+    lander = _small(tmp_path)
+    assert main(["synthesize", str(lander), "--out", str(tmp_path / "o"), "--serial", "--no-trade"]) == 0
+    for name in ("synthesis.json", "report.md", "report.html", "synthesis.xlsx", "convergence.png", "chosen/report.md"):
+        assert (tmp_path / "o" / name).is_file()
+    bad = tmp_path / "bad.toml"
+    bad.write_text(lander.read_text().replace('"legs.radius" = ["1.6 m", "3.2 m"]', '"legs.radius" = ["1.6 m", "2 m"]'))
+    assert main(["synthesize", str(bad), "--out", str(tmp_path / "p"), "--serial"]) == 2
+    err = capsys.readouterr().err
+    assert "synthesis.free.legs.radius" in err and "2.4 m" in err
