@@ -128,3 +128,14 @@ def test_synthesize_cli_writes_report_and_rejects_bad_bounds(tmp_path, capsys):
     assert main(["synthesize", str(bad), "--out", str(tmp_path / "p"), "--serial"]) == 2
     err = capsys.readouterr().err
     assert "synthesis.free.legs.radius" in err and "2.4 m" in err
+
+
+def test_criteria_kinds_name_every_violation():
+    """Each violation a landing can have is one of the criteria the pass rates count (else a failing landing
+    would count as meeting every criterion)."""
+    from alightsize.landings.criteria import PRESETS, Criteria, violation_kinds
+    crit = Criteria(*PRESETS["human"])
+    for outcome in ("bottomed", "tipped", "body_contact", "failed", "time_out"):
+        failures = crit.failures({"peak": {"xdd_g": [99.0] * 3, "onset_g_s": [1e6] * 3}, "outcome": outcome})
+        assert set(violation_kinds("; ".join(failures))) <= set(crit.kinds())
+        assert len(failures) == 7

@@ -13,6 +13,7 @@ from openpyxl import Workbook
 
 from alightsize import __version__
 from alightsize.common.atomic import write_atomic
+from alightsize.common.units import registry
 from alightsize.reports.design_report import _png, write_design
 from alightsize.reports.rendering import save_workbook, template_env, text_cell
 from alightsize.synthesis.search import SynthesisResult, convergence
@@ -90,21 +91,33 @@ def document(res: SynthesisResult) -> dict:
     goal = res.best_design.config.weight_goal if res.best_design else None
     return {
         "schema": SCHEMA, "lander": str(res.spec.path), "ok": res.ok, "seed": res.spec.seed,
-        "parameters": [{"key": p.key, "unit": p.unit, "low": p.low, "high": p.high, "start": s, "chosen": c}
-                       for p, s, c in zip(free, res.start.x, res.best.x)],
-        "start": res.start.as_json(), "chosen": res.best.as_json(), "weight_goal": goal,
+        "parameters": [{"key": p.key, "unit_si": _si_unit(p.unit), "low_si": p.low, "high_si": p.high,
+                        "start_si": s, "chosen_si": c} for p, s, c in zip(free, res.start.x, res.best.x)],
+        "start": _evaluation(res.start), "chosen": _evaluation(res.best), "weight_goal_fraction": goal,
         "search_rates": [r.as_json() for r in res.rates], "start_rates": [r.as_json() for r in res.start_rates],
         "check": {"samples": len(res.check_rows), "seed": res.spec.check_seed,
                   "rates": [r.as_json() for r in res.check_rates]},
         "convergence": convergence(res.history),
-        "trade": {axis: [{"value": p.value, "label": p.label, "feasible": p.best.feasible,
-                          "weight_fraction": p.best.fraction, "x": list(p.best.x)} for p in pts]
-                  for axis, pts in res.trade.items()},
-        "pareto": [{"weight_kg": e.weight_kg, "weight_fraction": e.fraction, "peak_g": e.peak_g, "x": list(e.x)}
+        "trade": {axis: [{f"limit_{'rad' if axis == 'slope' else 'm_s'}": p.value, "label": p.label,
+                          "feasible": p.best.feasible, "weight_fraction": p.best.fraction, "x_si": list(p.best.x)}
+                         for p in pts] for axis, pts in res.trade.items()},
+        "pareto": [{"weight_kg": e.weight_kg, "weight_fraction": e.fraction, "peak_g": e.peak_g, "x_si": list(e.x)}
                    for e in res.pareto()],
         "bounding_landings": bounding(res),
         "stats": {k: v for k, v in res.stats.items() if k != "wall_s"},
     }
+
+
+def _si_unit(unit: str) -> str:
+    return f"{registry().Quantity(1.0, unit).to_base_units().units:~}" or "1"
+
+
+def _evaluation(e) -> dict:
+    """An Evaluation for synthesis.json: the candidate as `x_si`, the rest as stored."""
+    d = e.as_json()
+    d["x_si"] = d.pop("x")
+    d["weight_fraction"] = d.pop("fraction")
+    return d
 
 
 def _context(res: SynthesisResult) -> dict:

@@ -195,3 +195,16 @@ class Evaluator:
 
     def close(self) -> None:
         self.db.close()
+
+
+def convergence(history: list[tuple[int, Evaluation]]) -> list[dict]:
+    """Per generation: candidates, feasible ones, and the best feasible weight fraction so far."""
+    out, best = [], None
+    for g in sorted({g for g, _ in history}):
+        evs = [e for h, e in history if h == g]
+        feas = [e.fraction for e in evs if e.feasible]
+        if feas:
+            best = min(feas) if best is None else min(best, min(feas))
+        out.append({"generation": g, "candidates": len(evs), "feasible": len(feas),
+                    "best_weight_fraction": best, "generation_best": min(feas) if feas else None})
+    return out

@@ -7,7 +7,7 @@ from math import degrees
 
 from matplotlib.figure import Figure
 
-from alightsize.synthesis.search import convergence
+from alightsize.synthesis.evaluate import convergence
 
 
 def convergence_figure(res) -> Figure:

@@ -22,7 +22,7 @@ from scipy.optimize import differential_evolution
 from alightsize.common.errors import InputError
 from alightsize.landings.probability import Rate, pass_rates
 from alightsize.pipeline.design import DesignResult
-from alightsize.synthesis.evaluate import CORNER, Evaluation, Evaluator
+from alightsize.synthesis.evaluate import CORNER, Evaluation, Evaluator, convergence
 from alightsize.synthesis.spec import Budget, SynthesisSpec, read_synthesis
 
 TRADE_KEYS = {"horizontal_speed": "requirements.envelope.horizontal_speed", "slope": "requirements.envelope.slope"}
@@ -92,19 +92,6 @@ class SynthesisResult:
         if kind in self.trade:
             return plots.trade_figure(self, kind)
         raise ValueError(f"plot kind {kind!r}: expected convergence, pareto or one of {', '.join(self.trade)}")
-
-
-def convergence(history: list[tuple[int, Evaluation]]) -> list[dict]:
-    """Per generation: candidates, feasible ones, and the best feasible weight fraction so far."""
-    out, best = [], None
-    for g in sorted({g for g, _ in history}):
-        evs = [e for h, e in history if h == g]
-        feas = [e.fraction for e in evs if e.feasible]
-        if feas:
-            best = min(feas) if best is None else min(best, min(feas))
-        out.append({"generation": g, "candidates": len(evs), "feasible": len(feas),
-                    "best_weight_fraction": best, "generation_best": min(feas) if feas else None})
-    return out
 
 
 def _zero(x) -> float:
