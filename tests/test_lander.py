@@ -47,6 +47,20 @@ def test_reading_runs_nothing_and_derives_the_cases():
     assert lander.scene.scene.gravity[2] == pytest.approx(-1.62)     # NASA lunar fact sheet, level nominal scene
 
 
+def test_signed_envelope_lands_into_the_slope_only(tmp_path):
+    """A signed slope range [-12, 0] deg gives corners at its two ends and Monte Carlo slopes inside it, and a
+    heading range bounds every sampled heading (the draws are uniform, so 100 of them reach both halves)."""
+    p = variant(tmp_path, {'slope = "12 deg"': 'slope = ["-12 deg", "0 deg"]\nheading = ["-20 deg", "20 deg"]'})
+    runs = alightsize.read_lander(p).study.runs
+    corners = {r.overrides["terrain.slope"] for r in runs if r.run_id.startswith("corner-")}
+    assert corners == {"-12 deg", "0 deg"}
+    mc = [r.overrides for r in runs if not r.run_id.startswith("corner-")]
+    slopes = [float(o["terrain.slope"].split()[0]) for o in mc]
+    headings = [float(o["initial.heading"].split()[0]) for o in mc]
+    assert len(mc) == 100 and -12 <= min(slopes) and max(slopes) <= 0 and min(slopes) < -6 < max(slopes)
+    assert -20 <= min(headings) < 0 < max(headings) <= 20
+
+
 def test_derived_column_is_the_leg_and_johnson_or_euler_applies(lunar):
     """The lower tube's column length is the leg's rho (1.6 m); its critical stress is Euler's pi^2 E/(L/k)^2 or
     Johnson's parabola by the transition slenderness pi sqrt(2E/Fcy) (closed forms, to 1e-12)."""
@@ -129,6 +143,7 @@ def test_crushing_force_change_reaches_landings_envelopes_and_checks(tmp_path):
     ({'vertical_speed = ["1 m/s", "3 m/s"]': 'vertical_speed = ["3 m/s", "1 m/s"]'}, "requirements.envelope.vertical_speed"),
     ({'load_radius = "10 mm"': 'load_radius = "10 kg"'}, "load_radius"),
     ({"[structure]\n": "[structure]\nbearing = 1\n"}, "structure"),
+    ({'slope = "12 deg"': 'slope = ["0 deg", "-12 deg"]'}, "requirements.envelope.slope"),
 ])
 def test_bad_lander_file_exits_2_naming_the_key(tmp_path, subs, key):
     p = variant(tmp_path, subs)

@@ -5,6 +5,7 @@ a stored candidate."""
 
 from __future__ import annotations
 
+import json
 import sqlite3
 from math import pi
 from pathlib import Path
@@ -13,9 +14,11 @@ import pytest
 
 from alightsize.cli import main
 from alightsize.common.config import load_toml
+from alightsize.common.errors import InputError
 from alightsize.landings.probability import Z95, wilson_interval
 from alightsize.model.materials import library
 from alightsize.pipeline.lander import read_lander
+from alightsize.synthesis.evaluate import stroke_used
 from alightsize.synthesis.search import synthesize
 from alightsize.synthesis.spec import FreeParameter, overrides, read_synthesis
 
@@ -85,6 +88,21 @@ def test_free_cell_parameters_and_crushable_weight():
     # the report's own axial core: 3750 lbf over a 1.074 in diameter is the material's crush strength (0.1 %,
     # the printed strength is rounded to 4 digits)
     assert 3750 * 4.4482216 / (pi / 4 * (1.074 * 0.0254) ** 2) == pytest.approx(hc.crush_strength, rel=1e-3)
+
+
+def test_stroke_margin_reads_the_cells_stroke_used(tmp_path):
+    """stroke_used is each cell's peak deflection over its stroke to bottoming (exact: a ratio of the row's
+    numbers); a margin of 1 is refused, naming the key."""
+    lander = read_lander(EXAMPLE)
+    legs = lander.scene.scene.legs
+    bottom = legs[1].cells[2].curve.bottoming
+    row = {"cells_json": json.dumps([{"leg": 2, "cells": [{"max_deflection_m": 0.0}] * 2
+                                      + [{"max_deflection_m": 0.75 * bottom}]}])}
+    assert stroke_used(row, legs) == pytest.approx(0.75, rel=1e-15)
+    bad = tmp_path / "bad.toml"
+    bad.write_text(EXAMPLE.read_text().replace("check_samples = 1000", "check_samples = 1000\nstroke_margin = 1.0"))
+    with pytest.raises(InputError, match="synthesis.stroke_margin"):
+        read_synthesis(bad)
 
 
 def test_small_synthesis_is_feasible_reproducible_and_resumes(tmp_path):

@@ -45,15 +45,17 @@ DEFAULT_SAMPLES = 100                # Monte Carlo landings: about a minute on 2
 
 @dataclass(frozen=True)
 class Envelope:
-    """Impact envelope, SI: (low, high) descent and horizontal speeds; largest slope, inclination and roll rate
-    (either sign); footpad friction range (None: the scene's terrain)."""
+    """Impact envelope, SI: (low, high) descent and horizontal speeds; signed (low, high) slope (negative: the
+    velocity heads into the slope) and inclination (positive: leaning toward the velocity); the Monte Carlo's
+    heading range; largest roll rate (either sign); footpad friction range (None: the scene's terrain)."""
 
     vertical: tuple[float, float]
     horizontal: tuple[float, float]
-    slope: float
-    inclination: float
+    slope: tuple[float, float]
+    inclination: tuple[float, float]
     roll_rate: float
     friction: tuple[float, float] | None
+    heading: tuple[float, float] = (-pi, pi)
 
 
 @dataclass(frozen=True)
@@ -104,24 +106,43 @@ def _range(node: Node, key: str, dim: str, default: tuple[float, float] | None) 
     return lo, hi
 
 
+def _signed(node: Node, key: str, limit: float) -> tuple[float, float]:
+    """An angle range: a largest magnitude v (either sign: (-v, v)) or a signed [low, high] range."""
+    if not node.has(key):
+        return 0.0, 0.0
+    raw = node.raw(key)
+    if isinstance(raw, list):
+        if len(raw) != 2:
+            raise node.error(key, "a largest magnitude or a signed [low, high] range", repr(raw))
+        lo, hi = (node.parse_quantity(f"{key}[{i}]", v, "angle", positive=False) for i, v in enumerate(raw))
+    else:
+        hi = node.quantity(key, "angle", 0.0, positive=False)
+        if hi < 0:
+            raise node.error(key, "a largest magnitude (either sign is landed) or a signed [low, high] range",
+                             "a negative value")
+        lo = -hi
+    if not (lo <= hi and max(abs(lo), abs(hi)) < limit):
+        raise node.error(key, f"low <= high, each within +-{degrees(limit):.0f} deg (exclusive)", repr(raw))
+    return lo, hi
+
+
 def _envelope(node: Node) -> Envelope:
-    node.allow(("vertical_speed", "horizontal_speed", "slope", "inclination", "roll_rate", "friction", "note"))
+    node.allow(("vertical_speed", "horizontal_speed", "slope", "inclination", "heading", "roll_rate", "friction",
+                "note"))
     vertical = _range(node, "vertical_speed", "velocity", None)
     if vertical is None or vertical[1] <= 0:
         raise node.error("vertical_speed", "a descent speed above 0, or a [low, high] range", repr(node.raw("vertical_speed", None)))
     horizontal = _range(node, "horizontal_speed", "velocity", (0.0, 0.0))
-    slope = node.quantity("slope", "angle", 0.0, positive=False) if node.has("slope") else 0.0
-    if not 0 <= slope < pi / 2:
-        raise node.error("slope", "the largest slope, 0 to below 90 deg", f"{degrees(slope):.4g} deg")
-    incl = node.quantity("inclination", "angle", 0.0, positive=False) if node.has("inclination") else 0.0
+    slope = _signed(node, "slope", pi / 2)
+    incl = _signed(node, "inclination", pi)
+    heading = _signed(node, "heading", 2 * pi) if node.has("heading") else (-pi, pi)
     rate = node.quantity("roll_rate", "angular_velocity", 0.0, positive=False) if node.has("roll_rate") else 0.0
-    if incl < 0 or rate < 0:
-        raise node.error("inclination" if incl < 0 else "roll_rate", "a largest magnitude (either sign is landed)",
-                         "a negative value")
+    if rate < 0:
+        raise node.error("roll_rate", "a largest magnitude (either sign is landed)", "a negative value")
     friction = _range(node, "friction", "", None)
     node.string("note", "")
     node.finish()
-    return Envelope(vertical, horizontal, slope, incl, rate, friction)
+    return Envelope(vertical, horizontal, slope, incl, rate, friction, heading)
 
 
 def _requirements(node: Node) -> Requirements:
@@ -152,8 +173,8 @@ def _q(x: float, unit: str) -> str:
 
 
 def landing_cases(path: Path, name: str, req: Requirements, legs: int, base: dict | None = None) -> Study:
-    """The envelope's corners (each range at both ends, slope, inclination and roll rate at either sign, a leg
-    leading or two legs straddling the velocity) and `samples` seeded Monte Carlo landings drawn uniformly
+    """The envelope's corners (each range at both ends, a slope or inclination magnitude and the roll rate at
+    either sign, a leg leading or two legs straddling the velocity) and `samples` seeded Monte Carlo landings drawn uniformly
     over the envelope (heading, roll and, with cell_scatter, every cell's crushing force as well); every run
     lands the lander file's scene with the overrides `base` (a design variant) under its own."""
     base = dict(base or {})
@@ -161,11 +182,15 @@ def landing_cases(path: Path, name: str, req: Requirements, legs: int, base: dic
     axes: dict[str, list] = {"initial.velocity[2]": [_q(-v, "m/s") for v in sorted(set(e.vertical))],
                              "initial.velocity[1]": [_q(h, "m/s") for h in sorted(set(e.horizontal))],
                              "initial.roll": ["0.0 deg", _q(180.0 / legs, "deg")]}
-    for key, value, unit in (("terrain.slope", degrees(e.slope), "deg"), ("initial.inclination", degrees(e.inclination), "deg"),
-                             ("initial.rates[2]", e.roll_rate, "rad/s")):
-        if value > 0:
-            axes[key] = [_q(-value, unit), _q(value, unit)]
+    signed = (("terrain.slope", tuple(map(degrees, e.slope)), "deg"),
+              ("initial.inclination", tuple(map(degrees, e.inclination)), "deg"),
+              ("initial.rates[2]", (-e.roll_rate, e.roll_rate), "rad/s"))
     fixed = dict(base)
+    for key, (lo, hi), unit in signed:
+        if lo != hi:
+            axes[key] = [_q(lo, unit), _q(hi, unit)]
+        elif lo != 0:
+            fixed[key] = _q(lo, unit)
     if e.friction is not None:
         fixed["terrain.mu_static"] = e.friction[1]
         axes["terrain.mu_dynamic"] = sorted(set(e.friction))
@@ -175,12 +200,9 @@ def landing_cases(path: Path, name: str, req: Requirements, legs: int, base: dic
               for n, c in enumerate(combos)]
     disp = [Dispersion("initial.velocity[2]", "uniform", (-e.vertical[1], -e.vertical[0]), "m/s", False),
             Dispersion("initial.velocity[1]", "uniform", e.horizontal, "m/s", False),
-            Dispersion("initial.heading", "uniform", (-180.0, 180.0), "deg", False),
+            Dispersion("initial.heading", "uniform", tuple(map(degrees, e.heading)), "deg", False),
             Dispersion("initial.roll", "uniform", (0.0, 360.0 / legs), "deg", False)]
-    for key, value, unit in (("terrain.slope", degrees(e.slope), "deg"), ("initial.inclination", degrees(e.inclination), "deg"),
-                             ("initial.rates[2]", e.roll_rate, "rad/s")):
-        if value > 0:
-            disp.append(Dispersion(key, "uniform", (-value, value), unit, False))
+    disp += [Dispersion(key, "uniform", (lo, hi), unit, False) for key, (lo, hi), unit in signed if lo != hi]
     if e.friction is not None and e.friction[0] < e.friction[1]:
         disp.append(Dispersion("terrain.mu_dynamic", "uniform", e.friction, "", False))
     if req.cell_scatter > 0:

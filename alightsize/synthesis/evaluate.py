@@ -3,6 +3,10 @@ through the sweep executors (process pool or Dask) into the synthesis's run stor
 a landing two candidates share runs once and a rerun after a kill finds every stored one; the design
 pipeline then sizes, checks and weighs it on those landings. Each evaluation is stored too (`candidates`).
 
+With a stroke margin m, a search landing in which any cell strokes past (1 - m) of its stroke to bottoming
+fails too (a design margin that keeps the winner off the bottoming edge; the fresh re-check judges the
+criteria alone).
+
 A candidate first lands the envelope's corners; only if it meets every criterion there does it land the
 Monte Carlo sample (a candidate that fails a corner is infeasible whatever the sample says).
 """
@@ -60,6 +64,17 @@ class Evaluation:
         return cls(**{**d, "x": tuple(d["x"]), "sizing_infeasible": tuple(d["sizing_infeasible"])})
 
 
+def stroke_used(row: dict, legs) -> float:
+    """The largest fraction of its stroke to bottoming any cell used in a landing row (cells_json), with
+    `legs` the scene's legs (their cells in the row's order)."""
+    used = 0.0
+    for leg in json.loads(row.get("cells_json") or "[]"):
+        cells = legs[leg["leg"] - 1].cells
+        for j, c in enumerate(leg["cells"]):
+            used = max(used, c["max_deflection_m"] / cells[j].curve.bottoming)
+    return used
+
+
 def _peak_g(rows: list[dict]) -> float | None:
     peaks = [max(r[f"peak_xdd{i}_g"] or 0.0 for i in (1, 2, 3)) for r in rows if r["status"] == "done"]
     return max(peaks) if peaks else None
@@ -71,10 +86,11 @@ class Evaluator:
 
     def __init__(self, path: Path, free: tuple[FreeParameter, ...], out: Path, context: dict | None = None,
                  backend: str = "pool", workers: int | None = None, scheduler: str | None = None,
-                 quiet: bool = True):
+                 stroke_margin: float = 0.0, quiet: bool = True):
         self.path, self.free, self.out = Path(path), free, Path(out)
         self.context = dict(context or {})
         self.backend, self.workers, self.scheduler, self.quiet = backend, workers, scheduler, quiet
+        self.stroke_margin = stroke_margin
         self.data = load_toml(self.path).data
         self.file_hash = hashlib.sha256(self.path.read_bytes()).hexdigest()
         self.out.mkdir(parents=True, exist_ok=True)
@@ -123,8 +139,14 @@ class Evaluator:
                stage: str) -> tuple[Evaluation, DesignResult | None]:
         """Size, check and weigh the candidate on its landed rows."""
         n = len(rows)
-        failing = sum(r["status"] != "done" or r.get("criteria_ok") != 1 for r in rows)
+        bad = [r["status"] != "done" or r.get("criteria_ok") != 1 for r in rows]
         kinds = Counter(k for r in rows for k in dict.fromkeys(violation_kinds(r.get("criteria_failed"))))
+        if self.stroke_margin > 0:
+            limit = 1.0 - self.stroke_margin
+            over = [r["status"] == "done" and stroke_used(r, lander.scene.scene.legs) > limit for r in rows]
+            kinds.update({f"a cell stroked past {100 * limit:.3g} % of its stroke": sum(over)})
+            bad = [b or o for b, o in zip(bad, over)]
+        failing = sum(bad)
         kinds.update({"the simulation failed": sum(r["status"] != "done" for r in rows)} if failing else {})
         spec = lander.spec
         study = replace(lander.study, runs=tuple(runs))

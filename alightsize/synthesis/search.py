@@ -142,7 +142,7 @@ def synthesize(path: str | Path, out: str | Path, start: dict[str, float] | None
             raise InputError("(start)", k, f"a start within [{p.show(p.low)}, {p.show(p.high)}]", p.show(v))
         x0[keys.index(k)] = v
     samples = {} if spec.budget.samples is None else {"requirements.monte_carlo.samples": spec.budget.samples}
-    ev = Evaluator(spec.path, spec.free, out, samples, backend, workers, scheduler)
+    ev = Evaluator(spec.path, spec.free, out, samples, backend, workers, scheduler, spec.stroke_margin)
     log(f"{spec.path.name}: {len(spec.free)} free parameters, up to {spec.budget.generations + 1} generations "
         f"of {spec.budget.population * len(spec.free)} candidates -> {out / 'runs.sqlite'}")
     history = search(ev, spec, spec.budget, x0, log)
@@ -166,7 +166,7 @@ def synthesize(path: str | Path, out: str | Path, start: dict[str, float] | None
             for value, label in values:
                 log(f"trade point {axis} = {label}")
                 tev = Evaluator(spec.path, spec.free, out, {**_trade_context(ev, axis, value), **_samples(spec)},
-                                backend, workers, scheduler)
+                                backend, workers, scheduler, spec.stroke_margin)
                 hist = search(tev, spec, spec.trade_budget, best.x, log)
                 result.trade[axis].append(TradePoint(axis, value, label, _best(hist)))
                 ev.computed += tev.computed
@@ -184,9 +184,12 @@ def _samples(spec: SynthesisSpec) -> dict:
 
 
 def _trade_context(ev: Evaluator, axis: str, value: float) -> dict:
-    """The envelope with its horizontal-speed or slope limit set to `value` (the low speed kept, or 0)."""
-    if axis == "slope":
-        return {TRADE_KEYS[axis]: f"{value!r} rad"}
+    """The envelope with its horizontal-speed limit (the low speed kept, or 0) or its slope magnitude set to
+    `value` (a signed slope range scaled to it, so an into-the-slope envelope stays one)."""
     env = ev.lander([p.start for p in ev.free]).requirements.envelope
+    if axis == "slope":
+        lo, hi = env.slope
+        scale = value / max(abs(lo), abs(hi)) if max(abs(lo), abs(hi)) > 0 else None
+        rng = (-value, value) if scale is None else (lo * scale, hi * scale)
+        return {TRADE_KEYS[axis]: [f"{rng[0]!r} rad", f"{rng[1]!r} rad"]}
     return {TRADE_KEYS[axis]: [f"{min(env.horizontal[0], value)!r} m/s", f"{value!r} m/s"]}
-

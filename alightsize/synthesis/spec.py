@@ -8,6 +8,7 @@ generations = 10           # at most this many generations after the initial pop
 population = 5             # candidates per generation per free parameter
 check_samples = 1000       # fresh Monte Carlo landings the winner is re-checked on (never seen in the search)
 check_seed = 2             # their seed
+stroke_margin = 0.1        # in the search, a cell using more than 90 % of its stroke fails its landing
 [synthesis.free]           # each: [low, high]; the file's own value is the starting design
 "cells.axial.crush_force" = ["4 kN", "16 kN"]   # a cell's crushing force (its force curve scaled)
 "cells.axial.stroke" = ["0.3 m", "0.6 m"]       # a cell's stroke to bottoming (its deflections scaled)
@@ -79,6 +80,7 @@ class SynthesisSpec:
     check_seed: int
     trade: dict[str, tuple[tuple[float, str], ...]]      # axis -> ((SI value, as written), ...)
     trade_budget: Budget
+    stroke_margin: float = 0.0          # search only: the fraction of each cell's stroke kept unused
 
 
 def _quantity(node: Node, key: str, text) -> tuple[float, str, float]:
@@ -156,12 +158,15 @@ def read_synthesis(path: str | Path) -> SynthesisSpec:
     if "synthesis" not in root.data:
         raise InputError(str(path), "synthesis", "a [synthesis] table with [synthesis.free] bounds", "none")
     node = root.table("synthesis")
-    node.allow(("seed", "generations", "population", "samples", "check_samples", "check_seed", "free", "trade",
-                "note"))
+    node.allow(("seed", "generations", "population", "samples", "check_samples", "check_seed", "stroke_margin",
+                "free", "trade", "note"))
     seed = node.integer("seed", 1, minimum=0)
     budget = _budget(node, Budget(10, 5, None))
     check_samples = node.integer("check_samples", 1000, minimum=0)
     check_seed = node.integer("check_seed", seed + 1, minimum=0)
+    margin = node.number("stroke_margin", 0.0, positive=False)
+    if not 0 <= margin < 1:
+        raise node.error("stroke_margin", "a fraction of the stroke in [0, 1)", repr(margin))
     free = _free(node.table("free"), root.data)
     trade, trade_budget = {}, Budget(max(1, budget.generations // 2), budget.population, budget.samples)
     tnode = node.table("trade", optional=True)
@@ -184,7 +189,7 @@ def read_synthesis(path: str | Path) -> SynthesisSpec:
             raise InputError(str(path), f"synthesis.free.{p.key}",
                              f"bounds that hold the file's own value {p.show(p.start)} (the starting design)",
                              f"[{p.show(p.low)}, {p.show(p.high)}]")
-    return SynthesisSpec(path, free, seed, budget, check_samples, check_seed, trade, trade_budget)
+    return SynthesisSpec(path, free, seed, budget, check_samples, check_seed, trade, trade_budget, margin)
 
 
 def overrides(free: tuple[FreeParameter, ...], x, data: dict) -> dict:
