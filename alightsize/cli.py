@@ -113,29 +113,15 @@ def _backend(args) -> tuple[str, int | None]:
     return backend, workers
 
 
-def _start(items: list[str], path: str) -> dict[str, float]:
-    """--start KEY=VALUE ... as SI floats of the free parameters' dimensions."""
-    from alightsize.common.units import registry
-    out = {}
-    for item in items:
-        key, sep, value = item.partition("=")
-        try:
-            if not sep:
-                raise ValueError
-            out[key.strip()] = float(registry().Quantity(value.strip()).to_base_units().magnitude)
-        except Exception:                              # noqa: BLE001 - pint raises many kinds on garbage
-            raise InputError("(command line)", "--start", "KEY=VALUE with a unit, e.g. cells.axial.crush_force=4kN",
-                             repr(item)) from None
-    return out
-
-
 def _synthesize(args) -> int:
     from alightsize.reports.synthesis_report import write_synthesis
     from alightsize.synthesis.search import synthesize
+    from alightsize.synthesis.spec import parse_start, read_synthesis
     backend, workers = _backend(args)
     out = Path(args.out)
+    start = parse_start(read_synthesis(args.lander), args.start)
     try:
-        res = synthesize(args.lander, out, _start(args.start, args.lander), not args.no_trade, backend, workers,
+        res = synthesize(args.lander, out, start, not args.no_trade, backend, workers,
                          args.scheduler, log=lambda msg: print(msg, flush=True))
     except KeyboardInterrupt:
         print(f"alightsize: interrupted; every landing and candidate is stored in {out / 'runs.sqlite'}: "

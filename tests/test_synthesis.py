@@ -71,10 +71,10 @@ def test_free_cell_parameters_and_crushable_weight():
     """Setting a cell's crushing force and stroke scales its curve so that its plateau and bottoming stroke
     are those values (1e-12), and the crushable core then weighs rho F s / (sigma_c eta) (App. V prism)."""
     spec = read_synthesis(EXAMPLE)
-    raw = load_toml(EXAMPLE).data
+    root = load_toml(EXAMPLE)
     stroke = FreeParameter("cells.axial.stroke", 0.2, 0.8, 0.45, "m", 1.0)
     free = (spec.free[0], stroke)
-    over = overrides(free, [12e3, 0.6], raw)
+    over = overrides(free, [12e3, 0.6], root)
     lander = read_lander(EXAMPLE, over)
     curve = lander.scene.scene.legs[0].axial.curve
     assert max(curve.force[:-1]) == pytest.approx(12e3, rel=1e-12)
@@ -146,6 +146,9 @@ def test_synthesize_cli_writes_report_and_rejects_bad_bounds(tmp_path, capsys):
     assert main(["synthesize", str(bad), "--out", str(tmp_path / "p"), "--serial"]) == 2
     err = capsys.readouterr().err
     assert "synthesis.free.legs.radius" in err and "2.4 m" in err
+    for start in ("cells.axial.crush_force=4 m", "cells.axial.crush_force=4000", "legs.width=2 m"):
+        assert main(["synthesize", str(lander), "--out", str(tmp_path / "q"), "--start", start]) == 2
+        assert "Traceback" not in capsys.readouterr().err
 
 
 def test_criteria_kinds_name_every_violation():

@@ -41,7 +41,6 @@ class Criteria:
             out.append(f"the landing ended {oc}")
         return out
 
-
     def kinds(self) -> dict[str, str]:
         """Every criterion: its violation as `violation_kinds` names it ("XDD(3) > 20 g") -> the requirement
         ("XDD(3) <= 20 g")."""

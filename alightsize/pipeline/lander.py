@@ -219,8 +219,7 @@ def landing_cases(path: Path, name: str, req: Requirements, legs: int, base: dic
 
 
 def _crush(curve) -> float:
-    """A cell's crushing force: the largest force of its curve before the bottoming segment."""
-    return max(curve.force[:-1])
+    return crush_stroke(curve.deflection, curve.force)[0]
 
 
 def _loads_config(root: Node, path: Path, name: str, scene: SceneConfig, units: str) -> tuple[LoadsConfig, tuple[str, ...]]:
@@ -260,14 +259,18 @@ def _loads_config(root: Node, path: Path, name: str, scene: SceneConfig, units: 
     return cfg, (own_name, *(c[0] for c in cfg.combined))
 
 
-def _cell_curve(root: Node, cell: str) -> tuple[float, float]:
-    """(crushing force, stroke to bottoming) of a cell of the lander file: the largest force before the
-    bottoming segment and the deflection where that segment starts."""
+def cell_curve(root: Node, cell: str) -> tuple[list[float], list[float]]:
+    """(deflections m, forces N) of the `[cells.NAME]` table of a lander file as written."""
     node = root.table("cells").table(cell)
-    force = [node.parse_quantity(f"force[{i}]", v, "force", positive=False) for i, v in enumerate(node.raw("force"))]
-    defl = [node.parse_quantity(f"deflection[{i}]", v, "length", positive=False)
-            for i, v in enumerate(node.raw("deflection"))]
-    return max(force[:-1]), defl[-2]
+    return ([node.parse_quantity(f"deflection[{i}]", v, "length", positive=False)
+             for i, v in enumerate(node.raw("deflection"))],
+            [node.parse_quantity(f"force[{i}]", v, "force", positive=False) for i, v in enumerate(node.raw("force"))])
+
+
+def crush_stroke(deflection, force) -> tuple[float, float]:
+    """(crushing force, stroke to bottoming) of a cell curve: the largest force before the bottoming segment
+    and the deflection where that segment starts."""
+    return max(force[:-1]), deflection[-2]
 
 
 def _crushable(node: Node, root: Node, mats: dict) -> Node:
@@ -285,7 +288,7 @@ def _crushable(node: Node, root: Node, mats: dict) -> Node:
     if mat is None or mat.crush_strength is None or mat.stroke_fraction is None:
         raise node.error("material", "a crushable material (with crush_strength and stroke_fraction)",
                          repr(node.data.get("material")))
-    force, stroke = _cell_curve(root, cell)
+    force, stroke = crush_stroke(*cell_curve(root, cell))
     prism = {k: v for k, v in w.items() if k not in ("method", "cell")}
     prism.update(method="prism", area=f"{force / mat.crush_strength!r} m^2", length=f"{stroke / mat.stroke_fraction!r} m")
     prism.setdefault("note", f"cell {cell}: area = crushing force / crush strength, length = stroke / {mat.stroke_fraction:g}")

@@ -19,7 +19,6 @@ from alightsize.reports.rendering import save_workbook, template_env, text_cell
 from alightsize.synthesis.search import SynthesisResult, convergence
 
 SCHEMA = "alightsize.synthesis/1"
-KNOT = 0.514444                     # m/s
 
 
 def _pct(x: float | None) -> str:
@@ -82,7 +81,8 @@ def _members(res: SynthesisResult) -> list[dict]:
 
 
 def _trade_label(axis: str, value: float) -> str:
-    return f"{degrees(value):.4g} deg" if axis == "slope" else f"{value / KNOT:.4g} kn ({value:.4g} m/s)"
+    knots = registry().Quantity(value, "m/s").to("knot").magnitude
+    return f"{degrees(value):.4g} deg" if axis == "slope" else f"{knots:.4g} kn ({value:.4g} m/s)"
 
 
 def document(res: SynthesisResult) -> dict:
@@ -164,6 +164,8 @@ def write_workbook(res: SynthesisResult, path: Path) -> None:
             text_cell(ws.cell(1, j), str(col))
         for i, row in enumerate(frame.itertuples(index=False), start=2):
             for j, v in enumerate(row, start=1):
+                if isinstance(v, float) and not isfinite(v):
+                    v = None                               # pandas' NaN for a value that does not exist
                 text_cell(ws.cell(i, j), v if not isinstance(v, (list, dict, tuple)) else json.dumps(v))
     save_workbook(wb, path)
 

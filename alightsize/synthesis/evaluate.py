@@ -91,7 +91,7 @@ class Evaluator:
         self.context = dict(context or {})
         self.backend, self.workers, self.scheduler, self.quiet = backend, workers, scheduler, quiet
         self.stroke_margin = stroke_margin
-        self.data = load_toml(self.path).data
+        self.root = load_toml(self.path)
         self.file_hash = hashlib.sha256(self.path.read_bytes()).hexdigest()
         self.out.mkdir(parents=True, exist_ok=True)
         RunStore(self.out / "runs.sqlite").close()                 # creates it in WAL mode
@@ -100,7 +100,7 @@ class Evaluator:
         self.computed = self.stored = 0                            # landings run / found stored
 
     def overrides(self, x) -> dict:
-        return {**self.context, **overrides(self.free, x, self.data)}
+        return {**self.context, **overrides(self.free, x, self.root)}
 
     def key(self, x) -> str:
         text = json.dumps({"overrides": self.overrides(x), "file": self.file_hash, "version": __version__},

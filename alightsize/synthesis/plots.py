@@ -7,6 +7,7 @@ from math import degrees
 
 from matplotlib.figure import Figure
 
+from alightsize.common.units import registry
 from alightsize.synthesis.evaluate import convergence
 
 
@@ -31,7 +32,7 @@ def convergence_figure(res) -> Figure:
 def trade_figure(res, axis: str) -> Figure:
     """The lightest feasible system's weight fraction at each limit of one trade axis."""
     pts = res.trade[axis]
-    scale, unit = (degrees(1.0), "deg") if axis == "slope" else (1 / 0.514444, "kn")
+    scale, unit = (degrees(1.0), "deg") if axis == "slope" else (registry().Quantity(1.0, "m/s").to("knot").magnitude, "kn")
     fig = Figure(figsize=(6, 4), layout="tight")
     ax = fig.subplots()
     ok = [(p.value * scale, 100 * p.best.fraction) for p in pts if p.best.feasible]

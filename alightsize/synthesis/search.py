@@ -23,7 +23,7 @@ from alightsize.common.errors import InputError
 from alightsize.landings.probability import Rate, pass_rates
 from alightsize.pipeline.design import DesignResult
 from alightsize.synthesis.evaluate import CORNER, Evaluation, Evaluator, convergence
-from alightsize.synthesis.spec import Budget, SynthesisSpec, read_synthesis
+from alightsize.synthesis.spec import Budget, SynthesisSpec, free_parameter, read_synthesis
 
 TRADE_KEYS = {"horizontal_speed": "requirements.envelope.horizontal_speed", "slope": "requirements.envelope.slope"}
 
@@ -133,14 +133,11 @@ def synthesize(path: str | Path, out: str | Path, start: dict[str, float] | None
     out = Path(out)
     t0 = time.perf_counter()
     x0 = [p.start for p in spec.free]
-    keys = [p.key for p in spec.free]
     for k, v in (start or {}).items():
-        if k not in keys:
-            raise InputError("(start)", k, "a free parameter of [synthesis.free] (" + ", ".join(keys) + ")", repr(k))
-        p = spec.free[keys.index(k)]
+        p = free_parameter(spec, k)
         if not p.low <= v <= p.high:
             raise InputError("(start)", k, f"a start within [{p.show(p.low)}, {p.show(p.high)}]", p.show(v))
-        x0[keys.index(k)] = v
+        x0[spec.free.index(p)] = v
     samples = {} if spec.budget.samples is None else {"requirements.monte_carlo.samples": spec.budget.samples}
     ev = Evaluator(spec.path, spec.free, out, samples, backend, workers, scheduler, spec.stroke_margin)
     log(f"{spec.path.name}: {len(spec.free)} free parameters, up to {spec.budget.generations + 1} generations "
@@ -189,7 +186,7 @@ def _trade_context(ev: Evaluator, axis: str, value: float) -> dict:
     env = ev.lander([p.start for p in ev.free]).requirements.envelope
     if axis == "slope":
         lo, hi = env.slope
-        scale = value / max(abs(lo), abs(hi)) if max(abs(lo), abs(hi)) > 0 else None
-        rng = (-value, value) if scale is None else (lo * scale, hi * scale)
+        m = max(abs(lo), abs(hi))
+        rng = (lo * value / m, hi * value / m) if m > 0 else (-value, value)
         return {TRADE_KEYS[axis]: [f"{rng[0]!r} rad", f"{rng[1]!r} rad"]}
     return {TRADE_KEYS[axis]: [f"{min(env.horizontal[0], value)!r} m/s", f"{value!r} m/s"]}

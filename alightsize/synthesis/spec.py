@@ -33,6 +33,7 @@ from pathlib import Path
 from alightsize.common.config import Node, load_toml
 from alightsize.common.errors import InputError
 from alightsize.common.units import registry
+from alightsize.pipeline.lander import cell_curve, crush_stroke
 
 CELL_KEYS = ("crush_force", "stroke")          # "cells.NAME.crush_force" / "cells.NAME.stroke"
 TRADE_AXES = {"horizontal_speed": "velocity", "slope": "angle"}
@@ -106,15 +107,7 @@ def _lookup(data: dict, key: str):
     return data
 
 
-def cell_curve(cells: dict, cell: str) -> tuple[list[float], list[float]]:
-    """(deflections m, forces N) of a cell table as written."""
-    units = registry()
-    table = cells[cell]
-    return ([float(units.Quantity(str(v)).to_base_units().magnitude) for v in table["deflection"]],
-            [float(units.Quantity(str(v)).to_base_units().magnitude) for v in table["force"]])
-
-
-def _free(node: Node, data: dict) -> tuple[FreeParameter, ...]:
+def _free(node: Node, root: Node) -> tuple[FreeParameter, ...]:
     out = []
     for key in node.data:
         raw = node.raw(key)
@@ -127,14 +120,14 @@ def _free(node: Node, data: dict) -> tuple[FreeParameter, ...]:
             raise node.error(key, "low < high", repr(raw))
         parts = key.split(".")
         if parts[0] == "cells":
-            if len(parts) != 3 or parts[2] not in CELL_KEYS or parts[1] not in (data.get("cells") or {}):
+            if len(parts) != 3 or parts[2] not in CELL_KEYS or parts[1] not in (root.data.get("cells") or {}):
                 raise node.error(key, "cells.NAME.crush_force or cells.NAME.stroke of a [cells.NAME] table", repr(key))
-            defl, force = cell_curve(data["cells"], parts[1])
-            start = max(force[:-1]) if parts[2] == "crush_force" else defl[-2]
+            force, stroke = crush_stroke(*cell_curve(root, parts[1]))
+            start = force if parts[2] == "crush_force" else stroke
         else:
             if parts[0] not in ("capsule", "legs", "terrain", "initial", "controls"):
                 raise node.error(key, "a cell parameter or a scene key (capsule.*, legs.*, ...)", repr(key))
-            value = _lookup(data, key)
+            value = _lookup(root.data, key)
             if value is None:
                 raise node.error(key, "a key the lander file sets (its value is the start)", "no such key in the file")
             start, _, _ = _quantity(node, key, value)
@@ -167,7 +160,7 @@ def read_synthesis(path: str | Path) -> SynthesisSpec:
     margin = node.number("stroke_margin", 0.0, positive=False)
     if not 0 <= margin < 1:
         raise node.error("stroke_margin", "a fraction of the stroke in [0, 1)", repr(margin))
-    free = _free(node.table("free"), root.data)
+    free = _free(node.table("free"), root)
     trade, trade_budget = {}, Budget(max(1, budget.generations // 2), budget.population, budget.samples)
     tnode = node.table("trade", optional=True)
     if tnode:
@@ -192,7 +185,36 @@ def read_synthesis(path: str | Path) -> SynthesisSpec:
     return SynthesisSpec(path, free, seed, budget, check_samples, check_seed, trade, trade_budget, margin)
 
 
-def overrides(free: tuple[FreeParameter, ...], x, data: dict) -> dict:
+def free_parameter(spec: SynthesisSpec, key: str) -> FreeParameter:
+    """The free parameter named `key` (InputError naming the ones there are)."""
+    for p in spec.free:
+        if p.key == key:
+            return p
+    raise InputError("(start)", key, "a free parameter of [synthesis.free] (" + ", ".join(p.key for p in spec.free) + ")",
+                     repr(key))
+
+
+def parse_start(spec: SynthesisSpec, items: list[str]) -> dict[str, float]:
+    """Command-line starts `KEY=VALUE` ("cells.axial.crush_force=4 kN") as SI values, each in its free
+    parameter's dimension."""
+    out = {}
+    for item in items:
+        key, sep, text = item.partition("=")
+        p = free_parameter(spec, key.strip()) if sep else None
+        try:
+            q = registry().Quantity(text.strip())
+            ok = p is not None and hasattr(q, "units") and \
+                q.dimensionality == registry().Quantity(1.0, p.unit).dimensionality and isfinite(q.magnitude)
+        except Exception:                              # noqa: BLE001 - pint raises many kinds on garbage
+            ok = False
+        if not ok:
+            raise InputError("(command line)", "--start", "KEY=VALUE with the parameter's unit, e.g. "
+                             f"{spec.free[0].key}={spec.free[0].show(spec.free[0].start)}", repr(item))
+        out[p.key] = float(q.to_base_units().magnitude)
+    return out
+
+
+def overrides(free: tuple[FreeParameter, ...], x, root: Node) -> dict:
     """The lander-file overrides of a candidate `x` (SI, one value per free parameter): a cell's crushing
     force scales its force curve and its stroke its deflections; a scene key takes the value in its unit."""
     out, scale = {}, {}
@@ -202,7 +224,7 @@ def overrides(free: tuple[FreeParameter, ...], x, data: dict) -> dict:
         else:
             scale.setdefault(p.cell[0], {})[p.cell[1]] = float(v) / p.start
     for cell, s in scale.items():
-        defl, force = cell_curve(data["cells"], cell)
+        defl, force = cell_curve(root, cell)
         if "crush_force" in s:
             out[f"cells.{cell}.force"] = [f"{f * s['crush_force']!r} N" for f in force]
         if "stroke" in s:
