@@ -104,3 +104,18 @@ def test_energy_closes_on_an_inclined_landing_with_pads_and_rebound():
     pads = res.deflections[:, :, 1:]
     assert np.nanmax(pads) > 0.005                           # pads crush: the case exercises eq. 21-27
     assert res.energy["closure_rel"] < 1e-4                  # issue 4 target
+
+
+def test_nutation_is_the_inclination_at_touchdown_and_stays_zero_on_a_level_drop():
+    """The summary's peak nutation (the angle the tip test uses): a level flat drop keeps the axis vertical
+    (symmetry: 0 to 1e-9 deg); tilted by 12 deg at touchdown it starts at exactly 12 deg (rotation of the
+    up axis, rounding 1e-9)."""
+    from alightsize.landings.output import nutation_deg, summary
+    from alightsize.model.scene_config import read_scene
+    from conftest import EXAMPLES
+    cfg = read_scene(EXAMPLES / "scenes" / "flat_drop.toml")
+    res = simulate(cfg.scene, cfg.controls)
+    assert summary(cfg, res)["peak"]["nutation_deg"] < 1e-9
+    cfg = read_scene(EXAMPLES / "scenes" / "flat_drop.toml", {"initial.inclination": "12 deg"})
+    res = simulate(cfg.scene, cfg.controls)
+    assert nutation_deg(cfg, res)[0] == pytest.approx(12.0, abs=1e-9)

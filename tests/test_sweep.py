@@ -20,7 +20,7 @@ from alightsize.landings.dispersions import read_dispersion
 from alightsize.common.errors import InputError
 from alightsize.landings.run_store import TIMING
 from alightsize.landings.study import read_study
-from alightsize.landings.sweep import run_sweep
+from alightsize.landings.sweep import NEWEST_FIGURE, run_sweep
 from alightsize.reports.sweep_report import wilson, write_results
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -126,6 +126,14 @@ def test_rerun_skips_done_runs_and_reruns_changed_ones(tmp_path):
     changed = read_study(tmp_path / "study.toml")
     stats = run_sweep(changed, tmp_path / "o", "serial", quiet=True)
     assert (stats.computed, stats.skipped) == (2, 2)
+    # a row stored by an earlier version, without the newest summary figure, lands again (and gains it)
+    db = sqlite3.connect(tmp_path / "o" / "runs.sqlite")
+    with db:
+        db.execute(f"UPDATE runs SET {NEWEST_FIGURE} = NULL WHERE rowid IN (SELECT rowid FROM runs LIMIT 1)")
+    stats = run_sweep(changed, tmp_path / "o", "serial", quiet=True)
+    assert (stats.computed, stats.skipped) == (1, 3)
+    assert db.execute(f"SELECT COUNT(*) FROM runs WHERE {NEWEST_FIGURE} IS NULL").fetchone() == (0,)
+    db.close()
 
 
 def test_a_run_that_raises_is_stored_failed_and_the_study_goes_on(tmp_path):

@@ -49,7 +49,7 @@ check_samples = 4
 def _small(tmp_path: Path) -> Path:
     text = EXAMPLE.read_text()
     text = text[:text.index("[requirements.envelope]")] + SMALL
-    text = text.replace('t_final = "10 s"', 't_final = "3 s"')
+    text = text.replace('t_final = "20 s"', 't_final = "3 s"')
     path = tmp_path / "small.toml"
     path.write_text(text)
     return path

@@ -34,6 +34,14 @@ def energies(cfg: SceneConfig, res: Result) -> tuple[np.ndarray, np.ndarray]:
     return ke, -cfg.scene.mass * res.y[:, 0:3] @ cfg.scene.gravity
 
 
+def nutation_deg(cfg: SceneConfig, res: Result) -> np.ndarray:
+    """Nutation (deg) at every history point: the angle of the capsule's up axis from the vertical, the angle the
+    tip test compares with `tip_angle` (main program stmt 367)."""
+    g = cfg.scene.gravity / np.linalg.norm(cfg.scene.gravity)
+    up = np.array([quat_matrix(q) @ cfg.scene.up for q in res.y[:, 6:10]])
+    return np.degrees(np.arccos(np.clip(-up @ g, -1.0, 1.0)))
+
+
 def outcome(cfg: SceneConfig, res: Result) -> tuple[str, str]:
     """(outcome, reason) per docs/contracts.md from the loop's status."""
     if res.bottomed is not None:
@@ -82,7 +90,7 @@ def summary(cfg: SceneConfig, res: Result) -> dict:
     return {"schema": "alightsize.simulate/1", "scene": cfg.name, "outcome": kind, "reason": reason,
             "t_end_s": float(res.t[-1]),
             "peak": {"xdd_g": np.max(np.abs(xdd), axis=0).tolist(), "omd_rad_s2": np.max(np.abs(omd), axis=0).tolist(),
-                     "onset_g_s": onset(res.t, xdd).tolist()},
+                     "onset_g_s": onset(res.t, xdd).tolist(), "nutation_deg": float(np.max(nutation_deg(cfg, res)))},
             "legs": legs, "energy": {k: float(v) for k, v in res.energy.items()},
             "solver": {"method": "dopri5" if cfg.controls.fixed_step is None else "dopri5-fixed",
                        "steps": res.steps, "rejected_steps": res.rejected, "rhs_evals": res.rhs_evals,

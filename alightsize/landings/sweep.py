@@ -50,6 +50,9 @@ def task_of(study: Study, run: Run, out: Path, member_loads: MemberLoads | None 
             "member_loads": member_loads}
 
 
+NEWEST_FIGURE = "peak_nutation_deg"    # the last column `_figures` gained: a stored row without it lands again
+
+
 def _figures(s: dict) -> dict:
     """The summary figures of one landing as flat, unit-suffixed columns (docs/contracts.md)."""
     row = {"outcome": s["outcome"], "reason": s["reason"], "t_end_s": s["t_end_s"]}
@@ -57,6 +60,7 @@ def _figures(s: dict) -> dict:
         for i, v in enumerate(s["peak"][key]):
             row[f"peak_{name}{i + 1}_{unit}"] = float(v)
     cells = [c for leg in s["legs"] for c in leg["cells"]]
+    row["peak_nutation_deg"] = s["peak"]["nutation_deg"]
     row["max_stroke_m"] = max(c["max_deflection_m"] for c in cells)
     row["max_ground_force_N"] = max(leg["max_ground_force_N"] for leg in s["legs"])
     row["any_bottomed"] = int(any(c["bottomed"] for c in cells))
@@ -274,6 +278,8 @@ def _stored(store: RunStore, tasks: list[dict]) -> tuple[list[dict], int]:
     rows = {r["run_id"]: r for r in store.rows([w for w in wanted if w is not None])}
     todo, reused = [], 0
     for t, old in zip(tasks, wanted):
+        if old is not None and rows[old].get(NEWEST_FIGURE) is None:
+            old = None                                 # stored by an earlier version that lacks a figure: land again
         if old is None:
             todo.append(t)
             continue
