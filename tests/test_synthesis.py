@@ -100,7 +100,9 @@ def test_stroke_margin_reads_the_cells_stroke_used(tmp_path):
                                       + [{"max_deflection_m": 0.75 * bottom}]}])}
     assert stroke_used(row, legs) == pytest.approx(0.75, rel=1e-15)
     bad = tmp_path / "bad.toml"
-    bad.write_text(EXAMPLE.read_text().replace("check_samples = 1000", "check_samples = 1000\nstroke_margin = 1.0"))
+    text = EXAMPLE.read_text()
+    assert "stroke_margin = 0.1 " in text
+    bad.write_text(text.replace("stroke_margin = 0.1 ", "stroke_margin = 1.0 "))
     with pytest.raises(InputError, match="synthesis.stroke_margin"):
         read_synthesis(bad)
 
