@@ -119,3 +119,18 @@ def test_nutation_is_the_inclination_at_touchdown_and_stays_zero_on_a_level_drop
     cfg = read_scene(EXAMPLES / "scenes" / "flat_drop.toml", {"initial.inclination": "12 deg"})
     res = simulate(cfg.scene, cfg.controls)
     assert nutation_deg(cfg, res)[0] == pytest.approx(12.0, abs=1e-9)
+
+
+def test_walking_is_judged_on_the_mean_speed_over_the_last_second():
+    """terrain_speed on closed-form tracks sampled every ms over 6 s: hopping down a slope at a mean 0.15 m/s
+    with the speed 0.3 sin^2(pi t / 0.5 s) (zero at the last instant, a hop's top) reads 0.15 m/s (exact for
+    whole hops: two in the last second; sampling 1e-9); rocking in place, x = 0.05 sin(2 pi t), reads 0
+    (1e-12) though it moves at 0.31 m/s at the end."""
+    from alightsize.landings.output import terrain_speed
+    t = np.linspace(0.0, 6.0, 6001)
+    y = np.zeros((len(t), 14))
+    y[:, 0] = 0.15 * t - 0.15 * 0.5 / (2 * np.pi) * np.sin(2 * np.pi * t / 0.5)     # integral of 0.3 sin^2
+    y[:, 3] = 0.3 * np.sin(np.pi * t / 0.5) ** 2
+    assert y[-1, 3] < 1e-12 and terrain_speed(t, y) == pytest.approx(0.15, abs=1e-9)
+    y[:, 0], y[:, 3] = 0.05 * np.sin(2 * np.pi * t), 0.1 * np.pi * np.cos(2 * np.pi * t)
+    assert y[-1, 3] > 0.3 and terrain_speed(t, y) == pytest.approx(0.0, abs=1e-12)

@@ -19,6 +19,7 @@ from alightsize.model.scene_config import SceneConfig
 from alightsize.landings.shock_spectrum import default_frequencies, srs
 
 ONSET_WINDOW = 1e-3        # s: onset rates are slopes of the acceleration sampled at this interval
+WALK_WINDOW = 1.0          # s: a landing still moving at t_final walks if its CG moved along the terrain over this
 LINE_STYLES = ("-", "--", ":", "-.")  # the stroke plot's cell kinds; the colour is the leg
 
 
@@ -60,10 +61,20 @@ def outcome(cfg: SceneConfig, res: Result) -> tuple[str, str]:
         return "body_contact", f"the intermediate member of leg {res.struck + 1} struck the terrain"
     if st == "failed":
         return "failed", "the step size collapsed or the state became non-finite"
-    speed = float(np.hypot(*res.y[-1, 3:5]))
+    speed = terrain_speed(res.t, res.y)
     if speed > 0.025 * max(float(np.hypot(*cfg.scene.v0[:2])), 1.0):
-        return "walking", f"still moving along the terrain at {speed:.3g} m/s at the final time"
+        return "walking", f"still moving along the terrain at a mean {speed:.3g} m/s over the last {WALK_WINDOW:g} s"
     return "time_out", "final time reached before the capsule settled"
+
+
+def terrain_speed(t: np.ndarray, y: np.ndarray) -> float:
+    """Mean speed of the CG along the terrain over the last WALK_WINDOW seconds (the last half of a shorter run;
+    the final speed for a single point), so that a capsule hopping down a slope does not read as at rest at a
+    hop's slow instant."""
+    k = int(np.searchsorted(t, t[-1] - min(WALK_WINDOW, 0.5 * (t[-1] - t[0]))))
+    if k >= len(t) - 1:
+        return float(np.hypot(*y[-1, 3:5]))
+    return float(np.hypot(*(y[-1, 0:2] - y[k, 0:2])) / (t[-1] - t[k]))
 
 
 def onset(t: np.ndarray, x: np.ndarray) -> np.ndarray:
