@@ -77,10 +77,11 @@ def geometry(art, i) -> ArticulatedGeometry:
 
 
 @njit(cache=True)
-def leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, X):
+def leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
     """Forces of leg i with its footpad held at P (terrain axes) under a capsule at r, attitude R (principal ->
     terrain), velocity v (terrain), rate w (principal), the shape of the last accepted step choosing the root.
-    Writes the cell deflections and forces and the force X on the capsule (principal axes); returns (power,
+    Writes the cell deflections, forces and deflection rates and the force X on the capsule (principal axes);
+    returns (power,
     alpha, beta, psi). Out of reach (no root), the upper deflection is written as -1 m (short of any set: the
     leg lifts off) and the forces are zero."""
     attach, L, art = geo[0], geo[1][i], geo[8]
@@ -92,7 +93,7 @@ def leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, X):
     e0, e1, e2 = mtv(L, -c0 - u0, -c1 - u1, -c2 - u2)              # its rate with the footpad held
     alpha = nearest_root(g, s0, s1, s2, shape[0])
     if alpha < 0.0:
-        defl[0], defl[1], frc[0], frc[1] = -1.0, 0.0, 0.0, 0.0
+        defl[0], defl[1], frc[0], frc[1], rte[0], rte[1] = -1.0, 0.0, 0.0, 0.0, 0.0, 0.0
         X[0], X[1], X[2] = 0.0, 0.0, 0.0
         return 0.0, shape[0], shape[1], shape[2]
     sa, ca = np.sin(alpha), np.cos(alpha)
@@ -124,6 +125,7 @@ def leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, X):
     k = min(alpha / SEAT, 1.0)
     x0, x1, x2 = k * x0, k * x1, k * x2 + (1.0 - k) * lever1 * f1 / (g.AU * cp)   # seated: FORCE's alpha <= 1e-5
     defl[0], defl[1], frc[0], frc[1] = d1, d2, f1, f2
+    rte[0], rte[1] = lever1 * psi_dot, lever2 * alpha_dot
     X[0], X[1], X[2] = mv(L, x0, x1, x2)
     return x0 * e0 + x1 * e1 + x2 * e2, alpha, beta, psi
 

@@ -44,32 +44,32 @@ FLOOR = 1e-6        # N: in-plane force below this never starts a slide (round-o
 
 
 @njit(cache=True, inline="always")
-def _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, X):
+def _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
     """(FE12, FE3, FE1, FE2, cells' power, alpha, beta, psi) with the footpad at P."""
-    power, alpha, beta, psi = leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, X)
+    power, alpha, beta, psi = leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
     fe = mv(R, X[0], X[1], X[2])                                # eq. 31
     return np.sqrt(fe[0] * fe[0] + fe[1] * fe[1]), fe[2], fe[0], fe[1], power, alpha, beta, psi   # eq. 32
 
 
 @njit(cache=True)
-def _at(geo, cells, i, mem, shape, mu, P0, d0, d1, s, r, R, v, w, P, defl, frc, X):
+def _at(geo, cells, i, mem, shape, mu, P0, d0, d1, s, r, R, v, w, P, defl, frc, rte, X):
     """Excess FE12 - mu FE3 and force scale with the footpad at P0 + s d; False out of the leg's reach."""
     P[0], P[1], P[2] = P0[0] + s * d0, P0[1] + s * d1, 0.0
-    fe12, fe3, _, _, _, _, _, _ = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, X)
+    fe12, fe3, _, _, _, _, _, _ = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
     if defl[0] < main_set(cells, i, mem):
         return -1.0, 0.0, False
     return fe12 - mu * max(fe3, 0.0), fe12 + abs(fe3), True
 
 
 @njit(cache=True)
-def _dip(geo, cells, i, mem, shape, mu, P0, d0, d1, a, h_a, b, r, R, v, w, P, defl, frc, X):
+def _dip(geo, cells, i, mem, shape, mu, P0, d0, d1, a, h_a, b, r, R, v, w, P, defl, frc, rte, X):
     """Golden-section search for the lowest excess between a (excess h_a > 0) and b, stopping at the first
     point where it is not positive; returns (lo, h_lo, s, h_s): that point and the left end of the search's
     last bracket (excess positive, in reach), so that [lo, s] brackets a crossing when h_s <= 0."""
     k = 0.3819660112501051
     c, d = a + k * (b - a), b - k * (b - a)
-    hc, _, okc = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, c, r, R, v, w, P, defl, frc, X)
-    hd, _, okd = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, d, r, R, v, w, P, defl, frc, X)
+    hc, _, okc = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, c, r, R, v, w, P, defl, frc, rte, X)
+    hd, _, okd = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, d, r, R, v, w, P, defl, frc, rte, X)
     for _ in range(MAX_DIP):
         if okc and hc <= 0.0:
             return a, h_a, c, hc
@@ -78,16 +78,16 @@ def _dip(geo, cells, i, mem, shape, mu, P0, d0, d1, a, h_a, b, r, R, v, w, P, de
         if not okd or hc < hd:
             b, d, hd, okd = d, c, hc, okc
             c = a + k * (b - a)
-            hc, _, okc = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, c, r, R, v, w, P, defl, frc, X)
+            hc, _, okc = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, c, r, R, v, w, P, defl, frc, rte, X)
         else:
             a, h_a, c, hc, okc = c, hc, d, hd, okd
             d = b - k * (b - a)
-            hd, _, okd = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, d, r, R, v, w, P, defl, frc, X)
+            hd, _, okd = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, d, r, R, v, w, P, defl, frc, rte, X)
     return a, h_a, c, hc if okc else 1.0
 
 
 @njit(cache=True)
-def _refine(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_lo, h_lo, s_hi, h_hi, ok_hi, r, R, v, w, P, defl, frc, X,
+def _refine(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_lo, h_lo, s_hi, h_hi, ok_hi, r, R, v, w, P, defl, frc, rte, X,
             tol: float) -> tuple[float, bool]:
     """Close the bracket [s_lo, s_hi] (excess h_lo > 0; h_hi <= 0, or s_hi out of reach) to tol of the reach, or
     until the excess is within tol of the force scale: bisection while the far end is out of reach, then
@@ -97,7 +97,7 @@ def _refine(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_lo, h_lo, s_hi, h_hi,
     xtol = tol * geo[2][i]
     while not ok_hi and s_hi - s_lo > xtol:
         s_m = 0.5 * (s_lo + s_hi)
-        h_m, _, ok_m = _at(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_m, r, R, v, w, P, defl, frc, X)
+        h_m, _, ok_m = _at(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_m, r, R, v, w, P, defl, frc, rte, X)
         if ok_m and h_m > 0.0:
             s_lo, h_lo = s_m, h_m
         elif ok_m:
@@ -137,7 +137,7 @@ def _refine(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_lo, h_lo, s_hi, h_hi,
             d = e = xm
         a, fa = b, fb
         b += d if abs(d) > xtol else (xtol if xm > 0.0 else -xtol)
-        fb, scale, ok_b = _at(geo, cells, i, mem, shape, mu_d, P0, d0, d1, b, r, R, v, w, P, defl, frc, X)
+        fb, scale, ok_b = _at(geo, cells, i, mem, shape, mu_d, P0, d0, d1, b, r, R, v, w, P, defl, frc, rte, X)
         if ok_b and abs(fb) <= tol * (scale + 1.0):
             return b, True
     if ok_b and fb <= 0.0:
@@ -146,8 +146,8 @@ def _refine(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_lo, h_lo, s_hi, h_hi,
 
 
 @njit(cache=True, inline="always")
-def footpad_force(geo, cells, i, mem, shape, P0, sliding, hold, mu_s, mu_d, r, R, v, w, P, defl, frc, X, tol):
-    """Footpad position P and the leg's forces (written to defl, frc, X) with friction, the slide closed to tol
+def footpad_force(geo, cells, i, mem, shape, P0, sliding, hold, mu_s, mu_d, r, R, v, w, P, defl, frc, rte, X, tol):
+    """Footpad position P and the leg's forces (written to defl, frc, rte, X) with friction, the slide closed to tol
     (relative); returns (sliding 0/1, cells' power, alpha, beta, psi, static margin mu_S FE3 + FLOOR - FE12 at P0,
     reach deficit, path error). P0 is the
     footpad at the last accepted step; with `hold` a sticking footpad stays at P0 whatever the margin. The
@@ -158,18 +158,18 @@ def footpad_force(geo, cells, i, mem, shape, P0, sliding, hold, mu_s, mu_d, r, R
     turns with the leg's push: half the slide times the change of the push direction along it (the sagitta
     of a uniformly turning path), the step loop's error control for the footpad position."""
     P[:] = P0
-    fe12, fe3, fe1, fe2, power, alpha, beta, psi = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, X)
+    fe12, fe3, fe1, fe2, power, alpha, beta, psi = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
     margin = mu_s * max(fe3, 0.0) + FLOOR - fe12
     if (hold and not sliding) or fe12 <= (mu_d if sliding else mu_s) * max(fe3, 0.0) + FLOOR:   # eq. 33-34
         return 0, power, alpha, beta, psi, margin, 0.0, 0.0
     h0 = fe12 - mu_d * max(fe3, 0.0)
     if h0 <= 0.0:                                               # static limit exceeded, dynamic one not
         return 1, power, alpha, beta, psi, margin, 0.0, 0.0
-    return _slide(geo, cells, i, mem, shape, P0, mu_d, r, R, v, w, P, defl, frc, X, tol, fe1, fe2, fe12, h0, margin)
+    return _slide(geo, cells, i, mem, shape, P0, mu_d, r, R, v, w, P, defl, frc, rte, X, tol, fe1, fe2, fe12, h0, margin)
 
 
 @njit(cache=True)
-def _slide(geo, cells, i, mem, shape, P0, mu_d, r, R, v, w, P, defl, frc, X, tol, fe1, fe2, fe12, h0, margin):
+def _slide(geo, cells, i, mem, shape, P0, mu_d, r, R, v, w, P, defl, frc, rte, X, tol, fe1, fe2, fe12, h0, margin):
     """The slide: the footpad moved from P0 along the leg's push until FE12 = mu_D FE3 (see footpad_force)."""
     d0, d1 = -fe1 / fe12, -fe2 / fe12                           # the leg's push on the footpad
     # Expand until the excess changes sign or the footpad leaves the leg's reach: steps growing fourfold, or
@@ -186,7 +186,7 @@ def _slide(geo, cells, i, mem, shape, P0, mu_d, r, R, v, w, P, defl, frc, X, tol
             root = s_lo + h_lo * (s_lo - s_prev) / (h_prev - h_lo)
             aimed = root < s_hi
             s_hi = min(s_hi, s_lo + 1.2 * (root - s_lo))
-        h_hi, _, ok_hi = _at(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_hi, r, R, v, w, P, defl, frc, X)
+        h_hi, _, ok_hi = _at(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_hi, r, R, v, w, P, defl, frc, rte, X)
         if h_hi <= 0.0:
             break
         turned = h_lo < h_prev and h_hi > h_lo
@@ -197,16 +197,16 @@ def _slide(geo, cells, i, mem, shape, P0, mu_d, r, R, v, w, P, defl, frc, X, tol
             # search for its bottom.
             a, h_a = (s_prev, h_prev) if turned else (s_lo, h_lo)
             a, h_a, s_m, h_m = _dip(geo, cells, i, mem, shape, mu_d, P0, d0, d1, a, h_a, s_hi, r, R, v, w, P, defl,
-                                    frc, X)
+                                    frc, rte, X)
             if h_m <= 0.0:
                 s_lo, h_lo, s_hi, h_hi, ok_hi = a, h_a, s_m, h_m, True
                 break
         s_prev, h_prev, s_lo, h_lo = s_lo, h_lo, s_hi, h_hi
         step = 4.0 * (s_lo - s_prev)
     s_end, ok_hi = _refine(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_lo, h_lo, s_hi, h_hi, ok_hi, r, R, v, w, P,
-                           defl, frc, X, tol)
+                           defl, frc, rte, X, tol)
     P[0], P[1], P[2] = P0[0] + s_end * d0, P0[1] + s_end * d1, 0.0
-    fe12, fe3, fe1, fe2, power, alpha, beta, psi = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, X)
+    fe12, fe3, fe1, fe2, power, alpha, beta, psi = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
     deficit = 0.0 if ok_hi else max(fe12 - mu_d * max(fe3, 0.0), 0.0) / cells[3][i, 0]
     path = 0.5 * s_end * np.hypot(d0 + fe1 / fe12, d1 + fe2 / fe12) if fe12 > FLOOR else 0.0
     return 1, power, alpha, beta, psi, margin, deficit, path

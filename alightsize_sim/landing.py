@@ -86,7 +86,7 @@ class Result:
     steps: int
     rejected: int
     rhs_evals: int
-    events: int                        # located events (touchdown, lift-off, stick-to-slip)
+    events: int                        # located events (touchdown, lift-off, stick-to-slip, cell turns, corners)
     event_trials: int                  # trial steps spent locating them
     wall_s: float
     energy: dict
@@ -136,8 +136,8 @@ class _Run:
         self.armed = np.zeros(n, np.int64)
         self.energy = np.zeros((n, C))
         self.last = np.zeros((n, 2 * C + 1))
-        self.work = (np.zeros((n, 3)), np.zeros(n, np.int64), np.zeros((n, C)), np.zeros((n, C)), np.zeros((n, 3)),
-                     np.zeros((n, lk.N_MT)))
+        self.work = lk.new_work(n, C)
+        self.cev = lk.cell_events(self.cells, self.mem)
         self.cnt = np.zeros(6, np.int64)
         self.run_state = np.array([ctl.first_step, 0.0, 0.0, -1.0, -1.0, -1.0, -1.0, -1.0])
         self.ctl_arr = np.array([ctl.t_final, ctl.rtol, ctl.atol, ctl.fixed_step or 0.0, ctl.max_step, ctl.event_tol,
@@ -167,7 +167,7 @@ class _Run:
         k = int(self.cnt[lk.K_HIST])
         self.H_t[k], self.H_y[k], self.H_dy[k] = t, y, dy
         self.H_P[k], self.H_c[k] = self.P, self.contact
-        Pt, slt, dt, ft, Xt, mt = self.work
+        Pt, slt, dt, ft, Xt, mt, rt = self.work
         for i in range(self.n):
             if self.contact[i]:
                 self.H_d[k, i], self.H_f[k, i], self.H_X[k, i] = dt[i], ft[i], Xt[i]
@@ -191,8 +191,9 @@ class _Run:
         while True:
             status, t = lk.run(self.geo, self.cells, s.mass, s.inertia, s.gravity, self.mu, self.bottoming, s.up,
                                s.body_points, self.order, self.mem, self.contact, self.P, self.sliding, self.shape,
-                               self.armed, self.energy, self.last, y, t, self.ctl_arr, self.cnt, self.run_state, self.H_t,
-                               self.H_y, self.H_dy, self.H_d, self.H_f, self.H_X, self.H_P, self.H_c)
+                               self.armed, self.cev, self.energy, self.last, y, t, self.ctl_arr, self.cnt,
+                               self.run_state, self.H_t, self.H_y, self.H_dy, self.H_d, self.H_f, self.H_X, self.H_P,
+                               self.H_c)
             if status == lk.BUFFER:
                 self._grow(2 * len(self.H_t))
             else:

@@ -4,7 +4,8 @@ State y = (r, v terrain axes; q principal -> terrain; omega principal axes; W th
 the capsule). Dormand-Prince 5(4) with error control (or fixed steps) advances it; the error control also bounds the path
 error of sliding footpads (footpad_slip). Discrete memory lives in
 arrays the caller owns and changes only when a step is accepted (`_commit`): cell maxima, footpad positions
-and slip state, contact flags. Touchdown, lift-off and stick-to-slip are located to `event_tol` seconds:
+and slip state, contact flags. Touchdown, lift-off, stick-to-slip, a cell's turn from loading to unloading (its
+largest stroke) and its passing a corner of its loading curve are located to `event_tol` seconds:
 first on the step's continuous extension (leg evaluations only), then by real trial steps aimed just short of
 the crossing, the step accepted before it; a trial step that fails the error test rejects the step. When no
 leg touches an axisymmetric capsule a step is the closed-form free flight (eq. 62-88) instead. The loop returns
@@ -53,6 +54,14 @@ ARM = 1e-7          # m: a leg's next switch is armed once it is this far from i
 LOCKED = -1         # armed[i]: a leg that left at once on touching stays unarmed until it touches again
 BAND = 1e-4         # m: an unarmed leg switches only this far past zero (grazing contact never chatters)
 PATH_FLOOR = 100.0  # event_tol: steps this short or shorter skip the footpad path error (_error_norm)
+N_WORK = 7          # leg state arrays of one evaluation: footpads, slip, deflections, forces, X, mt, deflection rates
+
+
+@njit(cache=True)
+def new_work(n, C):
+    """Leg state arrays of one evaluation for n legs of up to C cells (Pt, slt, dt, ft, Xt, mt, rt)."""
+    return (np.zeros((n, 3)), np.zeros(n, np.int64), np.zeros((n, C)), np.zeros((n, C)), np.zeros((n, 3)),
+            np.zeros((n, N_MT)), np.zeros((n, C)))
 
 
 @njit(cache=True)
@@ -62,7 +71,43 @@ def slip_events(mu):
 
 
 @njit(cache=True)
-def _legs(geo, cells, mu, mem, contact, P, sliding, shape, y, Pt, slt, dt, ft, Xt, mt, R):
+def cell_events(cells, mem):
+    """Event memory of every cell (n, C, 2): whether its turn to unloading is watched (set while it loads, its
+    deflection a new maximum and rising) and the index of the next corner of its loading curve past its
+    maximum (the curve's length when none is left)."""
+    n, C = mem.shape[0], mem.shape[1]
+    cev = np.zeros((n, C, 2), np.int64)
+    for i in range(n):
+        for j in range(C):
+            cev[i, j, 1] = _next_corner(cells, i, j, mem[i, j, 0], 0)
+    return cev
+
+
+@njit(cache=True)
+def _next_corner(cells, i, j, x, k):
+    """Index from k on of the first point of cell (i, j)'s loading curve beyond deflection x."""
+    m = cells[2][i, j]
+    while k < m and cells[0][i, j, k] <= x:
+        k += 1
+    return k
+
+
+@njit(cache=True)
+def cell_event(cells, cev, which, n):
+    """A located cell event `which` (index into the event functions, >= 2n): a turn stops watching the cell; a
+    corner moves the cell on to the curve's next corner."""
+    C = cev.shape[1]
+    c = which - 2 * n
+    if c < n * C:
+        cev[c // C, c % C, 0] = 0
+    else:
+        c -= n * C
+        i, j = c // C, c % C
+        cev[i, j, 1] = _next_corner(cells, i, j, cells[0][i, j, cev[i, j, 1]], cev[i, j, 1])
+
+
+@njit(cache=True)
+def _legs(geo, cells, mu, mem, contact, P, sliding, shape, y, Pt, slt, dt, ft, Xt, mt, rt, R):
     """Footpad, slip state, forces and mt = (static margin, reach deficit, alpha, beta, psi, footpad path error)
     of every leg at state y (mu = mu_S, mu_D, the slide's relative tolerance); returns the cells' power."""
     r, v, w = y[0:3], y[3:6], y[10:13]
@@ -72,7 +117,7 @@ def _legs(geo, cells, mu, mem, contact, P, sliding, shape, y, Pt, slt, dt, ft, X
         if contact[i]:
             sl, pw, mt[i, 2], mt[i, 3], mt[i, 4], mt[i, 0], mt[i, 1], mt[i, 5] = footpad_force(
                 geo, cells, i, mem[i], shape[i], P[i], sliding[i], hold, mu[0], mu[1], r, R, v, w, Pt[i], dt[i], ft[i],
-                Xt[i], mu[2])
+                rt[i], Xt[i], mu[2])
             slt[i] = sl
             power += pw
         else:
@@ -81,10 +126,10 @@ def _legs(geo, cells, mu, mem, contact, P, sliding, shape, y, Pt, slt, dt, ft, X
 
 
 @njit(cache=True)
-def rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape, y, dy, Pt, slt, dt, ft, Xt, mt):
+def rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape, y, dy, Pt, slt, dt, ft, Xt, mt, rt):
     """dy/dt: eq. 3-5 in terrain axes, Euler's equations 6-8 in principal axes, quaternion rate, leg work."""
     R = quat_matrix(y[6:10])
-    power = _legs(geo, cells, mu, mem, contact, P, sliding, shape, y, Pt, slt, dt, ft, Xt, mt, R)
+    power = _legs(geo, cells, mu, mem, contact, P, sliding, shape, y, Pt, slt, dt, ft, Xt, mt, rt, R)
     F0 = F1 = F2 = M0 = M1 = M2 = 0.0
     for i in range(len(contact)):
         if contact[i]:
@@ -103,16 +148,19 @@ def rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape,
 
 
 @njit(cache=True)
-def _events(cells, geo, mu, mem, contact, sliding, shape, armed, y, dt, mt, g, raw):
-    """Event functions g (2n); an event is a crossing of zero from above. g[i]: leg i's free footpad height
+def _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt, mt, g, raw):
+    """Event functions g ((2 + 2C) n); an event is a crossing of zero from above. g[i]: leg i's free footpad height
     (in the air) or main-cell compression beyond its set less the reach deficit (on the ground, from the leg
     state dt, mt already computed at y); an unarmed leg's threshold sits BAND past zero, so a footpad
     grazing the terrain stays put at zero force until it clearly leaves instead of switching every step.
     Not so for a footpad slid to the edge of its reach (deficit > 0): it still carries force, beyond the
     friction cone, so it leaves at once.
     g[n + i]: a sticking footpad's static margin mu_S FE3 + FLOOR - FE12 (N) when stick-to-slip is an event, else the
-    constant 1."""
-    n = len(contact)
+    constant 1. g[2n + C i + j]: the deflection rate of cell j of leg i while its turn is watched (cell_events);
+    g[(2 + C) n + C i + j]: its next loading-curve corner less its deflection (on the ground; else 1).
+    Locating these keeps every step's forces smooth: the largest stroke, which sets the unloading branch and the
+    bottoming margin, is then found to event_tol, not sampled at step points."""
+    n, C = len(contact), mem.shape[1]
     R = quat_matrix(y[6:10])
     located = slip_events(mu)
     for i in range(n):
@@ -123,6 +171,11 @@ def _events(cells, geo, mu, mem, contact, sliding, shape, armed, y, dt, mt, g, r
         if not (raw or armed[i] > 0 or (contact[i] and mt[i, 1] > 0.0)):
             g[i] += BAND
         g[n + i] = mt[i, 0] if located and contact[i] and not sliding[i] else 1.0
+        for j in range(C):
+            c = C * i + j
+            g[2 * n + c] = rt[i, j] if contact[i] and cev[i, j, 0] else 1.0
+            k = cev[i, j, 1]
+            g[(2 + C) * n + c] = cells[0][i, j, k] - dt[i, j] if contact[i] and k < cells[2][i, j] else 1.0
 
 
 @njit(cache=True)
@@ -149,11 +202,11 @@ def _stage(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, sha
     """One Dormand-Prince step of size h from y with K[0] = f(y): y1, the error estimate, K[6] = f(y1); the
     work arrays are left holding the legs at y1 (the last stage is evaluated there). With `flight` (no leg
     on the ground, axisymmetric body) the step is the closed form of eq. 62-88, exact."""
-    Pt, slt, dt, ft, Xt, mt = work
+    Pt, slt, dt, ft, Xt, mt, rt = work
     if flight:
         _fly(y, h, inertia, gravity, y1)
         err[:] = 0.0
-        rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape, y1, K[6], Pt, slt, dt, ft, Xt, mt)
+        rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape, y1, K[6], *work)
         return
     yi = y1                                                     # stage state, overwritten below
     for s in range(1, 7):
@@ -162,7 +215,7 @@ def _stage(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, sha
             for j in range(s):
                 acc += h * A[s, j] * K[j, c]
             yi[c] = acc
-        rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape, yi, K[s], Pt, slt, dt, ft, Xt, mt)
+        rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape, yi, K[s], *work)
     for c in range(NY):
         acc, e = y[c], 0.0
         for j in range(7):
@@ -172,14 +225,15 @@ def _stage(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, sha
 
 
 @njit(cache=True)
-def _commit(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, energy, last, work, g):
+def _commit(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, energy, last, work, g):
     """Accept state y: arm legs clear of their last switch, move footpads, keep the legs' shapes, start slides
     where the static margin is gone, add the step's work, update cell memory. energy (n, C): each cell's work
     (exact for the rate-free force, trapezoidal for the damper). last (n, 2C + 1): deflections, damper forces and a flag
-    that they are set. Returns whether a slide started (the forces at y change)."""
-    Pt, slt, dt, ft, Xt, mt = work
+    that they are set; cev the cells' event memory (cell_events). Returns whether a slide started (the forces at y
+    change)."""
+    Pt, slt, dt, ft, Xt, mt, rt = work
     cd, cf, cn, ck, cc, cy = cells
-    _events(cells, geo, mu, mem, contact, sliding, shape, armed, y, dt, mt, g, True)
+    _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt, mt, g, True)
     C = mem.shape[1]
     started = False
     for i in range(len(contact)):
@@ -202,7 +256,12 @@ def _commit(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, energy, l
                 energy[i, j] += crush_cell.static_work(d, f, ck[i, j], cy[i, j], mem[i, j, 0], mem[i, j, 1],
                                                        last[i, j], delta)
                 energy[i, j] += 0.5 * (damper + last[i, C + j]) * (delta - last[i, j])
+            if delta > mem[i, j, 0]:                  # a new largest stroke: watch its turn while it rises
+                cev[i, j, 0] = delta > ARM and rt[i, j] > 0.0
+            elif delta < mem[i, j, 0]:
+                cev[i, j, 0] = 0
             mem[i, j, 0], mem[i, j, 1] = crush_cell.commit(d, f, cy[i, j], mem[i, j, 0], mem[i, j, 1], delta)
+            cev[i, j, 1] = _next_corner(cells, i, j, mem[i, j, 0], cev[i, j, 1])
             last[i, j], last[i, C + j] = delta, damper
         last[i, 2 * C] = 1.0
     return started
@@ -212,13 +271,13 @@ def _commit(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, energy, l
 def switch(geo, cells, mem, contact, P, sliding, shape, armed, y, which, last, work):
     """Touchdown (the footpad holds where it landed) or lift-off (the shape is stored for recontact: eq. 13,
     FORCE's ZETA)."""
-    Pt, slt, dt, ft, Xt, mt = work
+    Pt, slt, dt, ft, Xt, mt, rt = work
     R = quat_matrix(y[6:10])
     armed[which] = 0
     C = mem.shape[1]
     if contact[which]:
         _, alpha, beta, psi = leg_force(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R, y[3:6],
-                                        y[10:13], dt[which], ft[which], Xt[which])
+                                        y[10:13], dt[which], ft[which], rt[which], Xt[which])
         contact[which] = 0
         shape[which, 0], shape[which, 1], shape[which, 2] = lift_shape(geo, cells, which, mem[which], alpha, beta, psi,
                                                                        dt[which, 0], y[0:3], R)
@@ -228,7 +287,7 @@ def switch(geo, cells, mem, contact, P, sliding, shape, armed, y, which, last, w
         P[which, 0], P[which, 1], P[which, 2] = pad[0], pad[1], 0.0
         contact[which], sliding[which] = 1, 1                   # (re)contact slides on mu_D (eq. 33)
         leg_force(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R, y[3:6], y[10:13], dt[which],
-                  ft[which], Xt[which])
+                  ft[which], rt[which], Xt[which])
         for j in range(C):
             last[which, j], last[which, C + j] = dt[which, j], 0.0
         last[which, 2 * C] = 1.0
@@ -360,12 +419,12 @@ def _dense(y0, y1, K, h, theta, out):
 
 
 @njit(cache=True)
-def _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, y1, K, h, j, g_prev, g1, tol, yt, gm, ga,
-           gb, work, flight, inertia, gravity):
+def _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, y1, K, h, j, g_prev, g1, tol, yt, gm,
+           ga, gb, work, flight, inertia, gravity):
     """The earliest crossing on the step's continuous extension (in free flight, where the step computes no
     stages, the closed form itself), found by Illinois false position with one leg evaluation per point (no
     integration): (time estimate, slope of the crossing function there, its index)."""
-    Pt, slt, dt, ft, Xt, mt = work
+    Pt, slt, dt, ft, Xt, mt, rt = work
     a, b, side = 0.0, h, 0
     ga[:] = g_prev
     gb[:] = g1
@@ -373,15 +432,15 @@ def _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, y1, K, h, 
     for _ in range(60):
         if b - a <= tol:
             break
-        m = b - fb * (b - a) / (fb - fa)
+        m = b - fb * (b - a) / (fb - fa) if fb != fa else 0.5 * (a + b)
         if not (a < m < b):
             m = 0.5 * (a + b)
         if flight:
             _fly(y, m, inertia, gravity, yt)
         else:
             _dense(y, y1, K, h, m / h, yt)
-        _legs(geo, cells, mu, mem, contact, P, sliding, shape, yt, Pt, slt, dt, ft, Xt, mt, quat_matrix(yt[6:10]))
-        _events(cells, geo, mu, mem, contact, sliding, shape, armed, yt, dt, mt, gm, False)
+        _legs(geo, cells, mu, mem, contact, P, sliding, shape, yt, Pt, slt, dt, ft, Xt, mt, rt, quat_matrix(yt[6:10]))
+        _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, yt, dt, rt, mt, gm, False)
         k = _first(g_prev, gm)
         if k >= 0:
             if k != j:
@@ -405,34 +464,34 @@ def _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, y1, K, h, 
 
 @njit(cache=True)
 def _copy_work(src, dst):
-    """Copy the leg state arrays of one evaluation (footpads, slip, deflections, forces, margins)."""
+    """Copy the leg state arrays of one evaluation (footpads, slip, deflections, forces, margins, rates)."""
     dst[0][:] = src[0]
     dst[1][:] = src[1]
     dst[2][:] = src[2]
     dst[3][:] = src[3]
     dst[4][:] = src[4]
     dst[5][:] = src[5]
+    dst[6][:] = src[6]
 
 
 @njit(cache=True)
 def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem, contact, P, sliding, shape, armed,
-        energy, last, y, t, ctl, cnt, run_state, H_t, H_y, H_dy, H_d, H_f, H_X, H_P, H_c):
+        cev, energy, last, y, t, ctl, cnt, run_state, H_t, H_y, H_dy, H_d, H_f, H_X, H_P, H_c):
     """Advance the landing from (t, y) until t_final or a status; y, t and every memory array are updated in
     place. Returns (status, t)."""
     n, n_cell = mem.shape[0], mem.shape[1]
     K = np.zeros((7, NY))
     y1, err = np.empty(NY), np.empty(NY)
-    g_prev, g1, g_lo = np.empty(2 * n), np.empty(2 * n), np.empty(2 * n)
-    work = (np.zeros((n, 3)), np.zeros(n, np.int64), np.zeros((n, n_cell)), np.zeros((n, n_cell)), np.zeros((n, 3)),
-            np.zeros((n, N_MT)))
-    Pt, slt, dt, ft, Xt, mt = work
+    n_g = (2 + 2 * n_cell) * n
+    g_prev, g1, g_lo = np.empty(n_g), np.empty(n_g), np.empty(n_g)
+    work, work_lo = new_work(n, n_cell), new_work(n, n_cell)
+    Pt, slt, dt, ft, Xt, mt, rt = work
     y_lo, yt = np.empty(NY), np.empty(NY)
-    gm, ga, gb = np.empty(2 * n), np.empty(2 * n), np.empty(2 * n)
-    work_lo = (Pt.copy(), slt.copy(), dt.copy(), ft.copy(), Xt.copy(), mt.copy())
+    gm, ga, gb = np.empty(n_g), np.empty(n_g), np.empty(n_g)
     args = (geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape)
     rhs(*args, y, K[0], *work)
     cnt[K_RHS] += 1
-    _events(cells, geo, mu, mem, contact, sliding, shape, armed, y, dt, mt, g_prev, False)
+    _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt, mt, g_prev, False)
     weight = mass * np.sqrt(gravity[0] ** 2 + gravity[1] ** 2 + gravity[2] ** 2)
     fixed = ctl[C_FIXED] > 0.0
     h = ctl[C_FIXED] if fixed else run_state[S_H]
@@ -454,7 +513,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                 cnt[K_REJECTED] += 1
                 h *= _shrink(e)
                 continue
-        _events(cells, geo, mu, mem, contact, sliding, shape, armed, y1, dt, mt, g1, False)
+        _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y1, dt, rt, mt, g1, False)
         j = _first(g_prev, g1)
         if j >= 0:
             # The earliest event: located first on the step's continuous extension (_guide), then by real trial
@@ -470,20 +529,20 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
             # (a slip search that misses the dip near the peg-leg axis and slides far).
             cnt[K_EVENTS] += 1
             tol = ctl[C_EVENTTOL]
-            est, slope, j = _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, y1, K, h, j,
+            est, slope, j = _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, y1, K, h, j,
                                    g_prev, g1, 0.1 * tol, yt, gm, ga, gb, work, flight, inertia, gravity)
             lo, hi, side, mid, a_hi, newton, e_trial = 0.0, h, 0, -1.0, g1[j], 0, 0.0
             g_lo[:] = g_prev
             f_lo, f_hi = g_prev[j], g1[j]
             while hi - lo > tol:
-                if lo > 0.0 and (g_lo[j] <= (GTOL if j < n else FLOOR) or g_lo[j] <= -slope * tol
+                if lo > 0.0 and (g_lo[j] <= (FLOOR if n <= j < 2 * n else GTOL) or g_lo[j] <= -slope * tol
                                  or g_lo[j] * (hi - lo) <= tol * (g_lo[j] - a_hi)):
                     break
                 # Aim just short of the crossing: first from the interpolant, then Newton from the nearer
                 # real end with the interpolant's slope; Illinois on the real bracket if that stalls.
                 mid = est - 0.5 * tol
                 if newton >= 4 or not (lo < mid < hi):
-                    mid = hi - f_hi * (hi - lo) / (f_hi - f_lo)
+                    mid = hi - f_hi * (hi - lo) / (f_hi - f_lo) if f_hi != f_lo else 0.5 * (lo + hi)
                 if not (lo < mid < hi):
                     mid = 0.5 * (lo + hi)
                 _stage(*args, y, mid, K, y1, err, work, flight)
@@ -493,7 +552,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                     e_trial = _error_norm(y, y1, err, ctl, geo, mt, Xt, weight, mid)
                     if not e_trial <= 1.0:                 # the trial step itself fails the error test
                         break
-                _events(cells, geo, mu, mem, contact, sliding, shape, armed, y1, dt, mt, g1, False)
+                _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y1, dt, rt, mt, g1, False)
                 k = _first(g_prev, g1)
                 newton += 1
                 if k >= 0:
@@ -536,12 +595,14 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
         y[:] = y1
         y[6:10] /= np.sqrt(y[6] ** 2 + y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
         cnt[K_STEPS] += 1
-        changed = _commit(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, energy, last, work, g1)
-        if forced >= n:
+        changed = _commit(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, energy, last, work, g1)
+        if forced >= 2 * n:
+            cell_event(cells, cev, forced, n)
+        elif forced >= n:
             sliding[forced - n], changed = 1, True
         k = cnt[K_HIST]                                # record as committed (a switching leg: before it)
-        if h_acc == 0.0 and k > 0:
-            k -= 1                                     # a switch at the start of a step replaces its record
+        if k > 0 and t <= H_t[k - 1]:
+            k -= 1                                     # an event at the start of a step replaces its record
         H_t[k] = t
         H_y[k] = y
         for i in range(n):
@@ -563,7 +624,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                     P[i] = Pt[i]                       # the step's slide and its path error vanish with h
         H_dy[k] = K[0]
         cnt[K_HIST] = k + 1
-        _events(cells, geo, mu, mem, contact, sliding, shape, armed, y, dt, mt, g_prev, False)
+        _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt, mt, g_prev, False)
         # A footpad that is out of reach from the start (a touchdown or slide start leaving it beyond the
         # friction cone at the edge of its reach) never crosses zero from above: it leaves now.
         # It stays unarmed until it touches again (BAND past zero), whatever its height: a touchdown is located
@@ -576,7 +637,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                 rhs(*args, y, K[0], *work)
                 cnt[K_RHS] += 1
                 H_dy[k] = K[0]
-                _events(cells, geo, mu, mem, contact, sliding, shape, armed, y, dt, mt, g_prev, False)
+                _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt, mt, g_prev, False)
         if fixed:
             h = ctl[C_FIXED]
         elif flight:

@@ -55,12 +55,12 @@ def initial_shape(legs) -> np.ndarray:
 
 
 @njit(cache=True, inline="always")
-def leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, X):
+def leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
     """Forces of leg i with its footpad held at P (see the kind's module); returns (cells' power, alpha, beta,
     psi)."""
     if geo[7][i] == ARTICULATED:
-        return articulated_leg.leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, X)
-    power, alpha, beta, _ = telescoping_leg.leg_force(geo, cells, i, mem, P, r, R, v, w, defl, frc, X)
+        return articulated_leg.leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
+    power, alpha, beta, _ = telescoping_leg.leg_force(geo, cells, i, mem, P, r, R, v, w, defl, frc, rte, X)
     return power, alpha, beta, 0.0
 
 

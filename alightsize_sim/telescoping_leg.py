@@ -66,10 +66,10 @@ def cell_force(cells, i, j, mem, delta, rate):
 
 
 @njit(cache=True, inline="always")
-def leg_force(geo, cells, i, mem, P, r, R, v, w, defl, frc, X):
+def leg_force(geo, cells, i, mem, P, r, R, v, w, defl, frc, rte, X):
     """Forces of leg i with its footpad held at P (terrain axes) under a capsule at r, attitude R (principal ->
-    terrain), velocity v (terrain), rate w (principal). Writes the deflections, cell forces and the force X on
-    the capsule (principal axes); returns (cells' power, alpha, beta, al)."""
+    terrain), velocity v (terrain), rate w (principal). Writes the deflections, cell forces, deflection rates and
+    the force X on the capsule (principal axes); returns (cells' power, alpha, beta, al)."""
     attach, to_body, rho, pad_lever, angles, n_pads, small = geo[0], geo[1], geo[2], geo[3], geo[4], geo[5], geo[6]
     a0, a1, a2 = attach[i, 0], attach[i, 1], attach[i, 2]
     L = to_body[i]
@@ -87,7 +87,7 @@ def leg_force(geo, cells, i, mem, P, r, R, v, w, defl, frc, X):
     u, ea, eb = (sa * cb, sa * sb, -ca), (ca * cb, ca * sb, sa), (-sb, cb, 0.0)
     delta = rho[i] - al                                             # eq. 20
     rate = -(u[0] * e0 + u[1] * e1 + u[2] * e2)
-    defl[0] = delta
+    defl[0], rte[0] = delta, rate
     frc[0] = cell_force(cells, i, 0, mem, delta, rate)
     power = frc[0] * rate
     alpha_dot = (ea[0] * e0 + ea[1] * e1 + ea[2] * e2) / al
@@ -104,7 +104,7 @@ def leg_force(geo, cells, i, mem, P, r, R, v, w, defl, frc, X):
         dj = pad_lever[i] * tilt * cg                               # eq. 21
         rj = pad_lever[i] * (tilt_rate * cg * alpha_dot + tilt * sg * beta_dot)
         fj = cell_force(cells, i, j + 1, mem, dj, rj)
-        defl[j + 1], frc[j + 1] = dj, fj
+        defl[j + 1], frc[j + 1], rte[j + 1] = dj, fj, rj
         power += fj * rj
         q_alpha += fj * pad_lever[i] * tilt_rate * cg               # eq. 23: generalized forces of the pads
         q_beta += fj * pad_lever[i] * sg                            # eq. 24

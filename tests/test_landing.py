@@ -81,6 +81,30 @@ def test_flat_drop_matches_the_closed_form():
     assert np.max(np.abs(res.y[:, 10:13])) < 1e-9            # no rotation
 
 
+
+@pytest.mark.parametrize("max_step", [1e-4, 5e-4, 2e-3, 5e-3])
+def test_the_largest_stroke_converges_monotonically_with_the_tolerance(max_step):
+    """The axial cells' largest stroke (their memory, which sets the unloading branch and the bottoming margin)
+    against the closed form, over rtol 1e-3 ... 1e-11 at largest steps of 0.1-5 ms: the cells' turn to
+    unloading and the curve's corners are located events, so the maximum is not sampled at step points (the
+    plateau's exactly quadratic motion would let the steps grow past it). Within 1e-6 m everywhere, 1e-8 m at
+    rtol <= 1e-8 (the turn is located to event_tol, where the stroke is flat: its error is ~a event_tol^2),
+    and non-increasing from rtol 1e-4 on (from 1e-3 to 1e-4 it may wander inside 1e-6 m: the step size there
+    is set by the touchdown's transient, not by the tolerance)."""
+    x_ex, _ = _exact_flat_drop()
+    errors = []
+    for k in range(3, 12):
+        rtol = 10.0 ** -k
+        res = simulate(_scene(), Controls(t_final=0.12, rtol=rtol, atol=1e-3 * rtol, max_step=max_step,
+                                          energy_check_from=None))
+        assert res.status == "end"
+        errors.append(float(np.max(np.abs(res.memory[:, 0, 0] - x_ex))))
+    errors = np.array(errors)
+    assert errors.max() < 1e-6
+    assert errors[5:].max() < 1e-8
+    assert np.all(np.diff(errors[1:]) <= 1e-12), errors
+
+
 @pytest.mark.parametrize("body, g", [("moon", 1.62), ("mars", 3.71), ("0.5 g_0", 0.5 * G)])
 def test_a_flat_drop_in_another_gravity_matches_its_closed_form(body, g):
     """The shipped flat-drop scene (the same lander as above) with `[scene] gravity` set: its maximum stroke and

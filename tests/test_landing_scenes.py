@@ -255,3 +255,42 @@ def test_study_bad_value_fails_only_its_run(tmp_path):
     import sqlite3
     rows = dict(sqlite3.connect(tmp_path / "o" / "runs.sqlite").execute("SELECT run_id, message FROM runs"))
     assert "terrain.slope" in rows["R1"] and rows["R2"] == ""
+
+
+@pytest.mark.parametrize("name", ["telescoping_config2", "articulated_config5"])
+def test_cell_rates_are_the_time_derivatives_of_the_deflections(name):
+    """The deflection rates a leg writes (the turning-point events follow their sign, the dampers use them) equal
+    the central difference of its deflections as the capsule translates and rotates over a held footpad
+    (d R / dt = R [w]x): step 1e-6 s, truncation ~1e-12 relative, tolerance 1e-6 of the largest rate."""
+    from scipy.linalg import expm
+    from alightsize_sim.legs import initial_shape, leg_force, pack
+    cfg = read_scene(f"{SCENES}/{name}.toml")
+    legs = cfg.scene.legs
+    geo, cells = pack(legs)
+    C = cells[2].shape[1]
+    mem, shape = np.zeros((C, 2)), initial_shape(legs)[0]
+    R0 = quat_matrix(np.array([0.99, 0.05, -0.08, 0.03]) / np.linalg.norm([0.99, 0.05, -0.08, 0.03]))
+    v, w = np.array([0.4, -0.3, -2.0]), np.array([0.5, -0.7, 0.2])
+    hanging = np.array(free_footpad_of(geo, cells, mem, shape, R0))
+    attach = R0 @ geo[0][0]
+    P = attach + 0.95 * (hanging - attach) + np.array([0.02, -0.01, 0.0])   # pressed toward the attachment
+    wx = np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
+
+    def deflections(t):
+        defl, frc, rte, X = np.zeros(C), np.zeros(C), np.zeros(C), np.zeros(3)
+        out = leg_force(geo, cells, 0, mem, shape, P, v * t, R0 @ expm(wx * t), v, w, defl, frc, rte, X)
+        return defl, rte, out
+
+    d0, rate, out = deflections(0.0)
+    assert d0[0] > 0.0 and np.isfinite(out[0])                   # the leg is on the ground and loaded
+    h = 1e-6
+    numeric = (deflections(h)[0] - deflections(-h)[0]) / (2 * h)
+    m = len(legs[0].cells)
+    assert np.max(np.abs(rate[:m])) > 0.1
+    assert np.max(np.abs(rate[:m] - numeric[:m])) < 1e-6 * np.max(np.abs(rate[:m]))
+
+
+def free_footpad_of(geo, cells, mem, shape, R):
+    """Leg 0's unloaded footpad under a capsule at the origin with attitude R (terrain axes)."""
+    from alightsize_sim.legs import free_footpad
+    return free_footpad(geo, cells, 0, mem, shape, np.zeros(3), R)

@@ -106,7 +106,8 @@ def scipy_landing(cfg: SceneConfig, ctl: Controls, method: str) -> tuple[dict, i
     run = _Run(s, ctl)
     y = initial_state(s, run)
     n = run.n
-    work, g_prev, g = run.work, np.empty(2 * n), np.empty(2 * n)
+    n_g = (2 + 2 * run.C) * n
+    work, g_prev, g = run.work, np.empty(n_g), np.empty(n_g)
     nfev = steps = 0
     peak, t = 0.0, 0.0
 
@@ -122,17 +123,20 @@ def scipy_landing(cfg: SceneConfig, ctl: Controls, method: str) -> tuple[dict, i
 
     def _events(yy, out):
         """Event values at yy from the leg state the last evaluation of f left in `work`."""
-        lk._events(run.cells, run.geo, run.mu, run.mem, run.contact, run.sliding, run.shape, run.armed, yy, work[2],
-                   work[5], out, False)
+        lk._events(run.cells, run.geo, run.mu, run.mem, run.contact, run.sliding, run.shape, run.armed, run.cev, yy,
+                   work[2], work[6], work[5], out, False)
         return out
 
     def accept(tt, yy, which):
         """Commit memory at an accepted state (event `which` if >= 0: a contact switch below n, a slide from
-        n on, which the commit starts); the peak acceleration there."""
+        n on, which the commit starts, a cell's turn or loading-curve corner from 2n on); the peak acceleration
+        there."""
         dy = f(tt, yy)
         started = lk._commit(run.geo, run.cells, run.mu, run.mem, run.contact, run.P, run.sliding, run.shape,
-                             run.armed, yy, run.energy, run.last, work, g)
-        if 0 <= which < n:
+                             run.armed, run.cev, yy, run.energy, run.last, work, g)
+        if which >= 2 * n:
+            lk.cell_event(run.cells, run.cev, which, n)
+        elif 0 <= which < n:
             lk.switch(run.geo, run.cells, run.mem, run.contact, run.P, run.sliding, run.shape, run.armed, yy, which,
                       run.last, work)
         if which >= 0 or started:

@@ -56,7 +56,7 @@ def leg_shapes(scene: Scene, res: Result) -> np.ndarray:
     geo, cells = pack(scene.legs)
     n_cell = cells[2].shape[1]
     mem = np.zeros((n_cell, 2))
-    defl, frc, X = np.zeros(n_cell), np.zeros(n_cell), np.zeros(3)
+    defl, frc, rte, X = np.zeros(n_cell), np.zeros(n_cell), np.zeros(n_cell), np.zeros(3)
     y = res.y
     R = [quat_matrix(q / np.linalg.norm(q)) for q in y[:, 6:10]]
     out = np.full(res.contact.shape + (3,), np.nan)
@@ -69,7 +69,7 @@ def leg_shapes(scene: Scene, res: Result) -> np.ndarray:
                 shape = np.array(lift_shape(geo, cells, i, mem, *out[k - 1, i], 0.0, y[k - 1, 0:3], R[k - 1]))
                 continue
             out[k, i] = leg_force(geo, cells, i, mem, shape, res.footpad[k, i], y[k, 0:3], R[k], y[k, 3:6],
-                                  y[k, 10:13], defl, frc, X)[1:]
+                                  y[k, 10:13], defl, frc, rte, X)[1:]
             shape = out[k, i].copy()
             miss = np.max(np.abs(defl[:m] - res.deflections[k, i, :m]))
             if not miss <= SHAPE_TOL:
