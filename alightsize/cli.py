@@ -14,6 +14,7 @@ from pathlib import Path
 
 from alightsize import __version__
 from alightsize.common.errors import InputError, InputWarning
+from alightsize.common.compile_notice import compile_notice
 from alightsize.common.resources import data_dir
 
 
@@ -266,7 +267,7 @@ def _print_input_warnings() -> None:
 def main(argv: list[str] | None = None) -> int:
     args = parser().parse_args(argv)
     try:
-        with warnings.catch_warnings():
+        with warnings.catch_warnings(), compile_notice():
             _print_input_warnings()
             return args.run(args)
     except InputError as exc:
