@@ -13,7 +13,7 @@ import numpy as np
 from numba import njit
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def quat_matrix(q: np.ndarray) -> np.ndarray:
     """Rotation matrix (body -> terrain) of the quaternion q, normalized here (any nonzero length)."""
     w, x, y, z = q[0], q[1], q[2], q[3]
@@ -45,7 +45,7 @@ def matrix_quat(m: np.ndarray) -> np.ndarray:
     return q if q[0] >= 0 else -q
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def quat_rate(q: np.ndarray, omega: np.ndarray, out: np.ndarray) -> np.ndarray:
     """dq/dt = q (x) (0, omega) / 2 of the unit quaternion along q, omega in body axes, written to out."""
     n = 0.5 / np.sqrt(q[0] ** 2 + q[1] ** 2 + q[2] ** 2 + q[3] ** 2)

@@ -87,42 +87,50 @@ import math
 import numpy as np
 from numba import njit
 
+from .vec3 import cross, mtv, mv
+
 FOOT = 0.3048
 QUIESCENCE_FRACTION = 0.025                 # AFFDL-TR-66-33 main program, QUIVEL / QUIVEX = .025 * (...)
 
 
 @njit(cache=True)
-def _orientation(pads: np.ndarray, up: np.ndarray) -> float:
+def _orientation(pads: np.ndarray, up) -> float:
     """+1 if the pads run counter-clockwise seen from above (or are degenerate: 2 or collinear), else -1."""
     n = pads.shape[0]
     area = 0.0
     scale = 0.0
     for i in range(n):
         j = (i + 1) % n
-        area += np.dot(np.cross(pads[i] - pads[0], pads[j] - pads[0]), up)
+        c = cross(pads[i, 0] - pads[0, 0], pads[i, 1] - pads[0, 1], pads[i, 2] - pads[0, 2],
+                  pads[j, 0] - pads[0, 0], pads[j, 1] - pads[0, 1], pads[j, 2] - pads[0, 2])
+        area += c[0] * up[0] + c[1] * up[1] + c[2] * up[2]
         for k in range(3):
             scale = max(scale, abs(pads[i, k] - pads[0, k]))
     return -1.0 if area < -1e-12 * scale * scale else 1.0
 
 
 @njit(cache=True)
-def edge_geometry(r: np.ndarray, p_i: np.ndarray, p_j: np.ndarray, up: np.ndarray,
-                  sense: float) -> tuple[np.ndarray, np.ndarray, float, float]:
+def edge_geometry(r, p_i, p_j, up, sense: float):
     """(e, hvec, h, signed rise) of the edge p_i -> p_j: unit direction, perpendicular from the edge to the
-    CG, its length and the CG rise to pass over the edge (negative: the CG is already beyond it).
+    CG (both 3-tuples), its length and the CG rise to pass over the edge (negative: the CG is already beyond
+    it). Scalar arithmetic on 3-vectors (arrays or tuples).
 
     sense = +1 for pads counter-clockwise seen from above (outward normal e x up), -1 for clockwise.
     """
-    d = p_j - p_i
-    e = d / np.linalg.norm(d)
-    rel = r - p_i
-    hvec = rel - np.dot(rel, e) * e
-    h = np.linalg.norm(hvec)
+    d0, d1, d2 = p_j[0] - p_i[0], p_j[1] - p_i[1], p_j[2] - p_i[2]
+    dn = math.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
+    e = (d0 / dn, d1 / dn, d2 / dn)
+    q0, q1, q2 = r[0] - p_i[0], r[1] - p_i[1], r[2] - p_i[2]
+    s = q0 * e[0] + q1 * e[1] + q2 * e[2]
+    hvec = (q0 - s * e[0], q1 - s * e[1], q2 - s * e[2])
+    h = math.sqrt(hvec[0] ** 2 + hvec[1] ** 2 + hvec[2] ** 2)
     # AFFDL-TR-66-33 eq. 93 generalised: rise = h |up_perp| - hvec.up = |up_perp| h (1 - cos delta)
-    up_perp = np.linalg.norm(up - np.dot(up, e) * e)
-    rise = h * up_perp - np.dot(hvec, up)
+    ue = up[0] * e[0] + up[1] * e[1] + up[2] * e[2]
+    up_perp = math.sqrt((up[0] - ue * e[0]) ** 2 + (up[1] - ue * e[1]) ** 2 + (up[2] - ue * e[2]) ** 2)
+    rise = h * up_perp - (hvec[0] * up[0] + hvec[1] * up[1] + hvec[2] * up[2])
     rise = max(rise, 0.0)                      # rounding: the top of the circle is never below the CG
-    if sense * np.dot(hvec, np.cross(e, up)) > 0.0:   # beyond the vertical plane through the edge
+    n0, n1, n2 = cross(e[0], e[1], e[2], up[0], up[1], up[2])
+    if sense * (hvec[0] * n0 + hvec[1] * n1 + hvec[2] * n2) > 0.0:   # beyond the vertical plane through the edge
         rise = -rise
     return e, hvec, h, rise
 
@@ -141,30 +149,32 @@ def tipping_margins(r: np.ndarray, v: np.ndarray, R: np.ndarray, omega: np.ndarr
     """
     n = pads.shape[0]
     out = np.empty(n)
-    g = np.linalg.norm(gravity)
-    up = -gravity / g
+    g = math.sqrt(gravity[0] ** 2 + gravity[1] ** 2 + gravity[2] ** 2)
+    up = (-gravity[0] / g, -gravity[1] / g, -gravity[2] / g)
     sense = _orientation(pads, up)
-    speed = np.linalg.norm(v)
-    spin = np.linalg.norm(omega)
-    h_cg = np.dot(R, inertia * omega)              # angular momentum about the CG, terrain axes
+    speed = math.sqrt(v[0] ** 2 + v[1] ** 2 + v[2] ** 2)
+    spin = math.sqrt(omega[0] ** 2 + omega[1] ** 2 + omega[2] ** 2)
+    h_cg = mv(R, inertia[0] * omega[0], inertia[1] * omega[1], inertia[2] * omega[2])   # about the CG, terrain
     for k in range(n):
         p_i = pads[k]
         p_j = pads[(k + 1) % n]
-        if np.linalg.norm(p_j - p_i) <= 0.0:
+        if not (p_j[0] != p_i[0] or p_j[1] != p_i[1] or p_j[2] != p_i[2]):
             out[k] = -np.inf
             continue
         e, hvec, h, rise = edge_geometry(r, p_i, p_j, up, sense)
         if h <= 0.0:
             out[k] = -np.inf
             continue
-        eb = np.dot(R.T, e)
+        eb = mtv(R, e[0], e[1], e[2])
         i_e = inertia[0] * eb[0] ** 2 + inertia[1] * eb[1] ** 2 + inertia[2] * eb[2] ** 2
         i_edge = i_e + mass * h * h            # parallel axes
         if conservative:
             gamma_dot = speed / h + spin       # AFFDL-TR-66-33 eq. 89
             ke = 0.5 * i_edge * gamma_dot * gamma_dot   # AFFDL-TR-66-33 eq. 90 (rotational term)
         else:
-            h_e = np.dot(e, h_cg + mass * np.cross(hvec, v))   # angular momentum about the edge
+            c = cross(hvec[0], hvec[1], hvec[2], v[0], v[1], v[2])
+            # angular momentum about the edge
+            h_e = e[0] * (h_cg[0] + mass * c[0]) + e[1] * (h_cg[1] + mass * c[1]) + e[2] * (h_cg[2] + mass * c[2])
             ke = 0.5 * h_e * h_e / i_edge
         out[k] = mass * g * rise - ke          # AFFDL-TR-66-33 eq. 92-93 as an energy balance
     return out
@@ -181,23 +191,25 @@ def stable_by_energy(margins: np.ndarray) -> bool:
 
 @njit(cache=True)
 def hanging_margin(r: np.ndarray, v: np.ndarray, omega: np.ndarray, mass: float, inertia: np.ndarray,
-                   gravity: np.ndarray, a: np.ndarray, b: np.ndarray, foot: np.ndarray) -> float:
+                   gravity: np.ndarray, a: np.ndarray, b: np.ndarray, foot) -> float:
     """Energy margin (J) of a leg hanging clear of the terrain (its free footpad `foot` at height foot[2] > 0)
     beside the support edge through the footpads a, b of its grounded neighbours: the work against gravity
     to turn the capsule about that edge until the footpad touches, less the whole kinetic energy. Positive:
     the capsule cannot bring the leg down (first order in the small turn; the kinetic energy is all counted,
     translation included, so conservative). Not positive when the turn lowers the CG (the capsule falls onto
     that leg), the footpad lies on the edge's line or a and b coincide."""
-    span = np.sqrt(np.sum((b - a) ** 2))
+    span = math.sqrt((b[0] - a[0]) ** 2 + (b[1] - a[1]) ** 2 + (b[2] - a[2]) ** 2)
     if not span > 0.0:
         return -1.0
-    e = (b - a) / span
-    df = np.cross(e, foot - a)                         # footpad displacement per radian about e
+    e0, e1, e2 = (b[0] - a[0]) / span, (b[1] - a[1]) / span, (b[2] - a[2]) / span
+    df = cross(e0, e1, e2, foot[0] - a[0], foot[1] - a[1], foot[2] - a[2])   # footpad displacement per radian
     if not abs(df[2]) >= 1e-12:
         return -1.0
     turn = foot[2] / -df[2]                            # signed angle (rad) that lands the footpad
-    rise = -(gravity @ np.cross(e, r - a)) * turn      # work against gravity per unit mass over that turn
-    kinetic = 0.5 * mass * (v @ v) + 0.5 * np.sum(inertia * omega * omega)
+    c = cross(e0, e1, e2, r[0] - a[0], r[1] - a[1], r[2] - a[2])
+    rise = -(gravity[0] * c[0] + gravity[1] * c[1] + gravity[2] * c[2]) * turn   # work per unit mass
+    kinetic = 0.5 * mass * (v[0] ** 2 + v[1] ** 2 + v[2] ** 2) + 0.5 * (
+        inertia[0] * omega[0] ** 2 + inertia[1] * omega[1] ** 2 + inertia[2] * omega[2] ** 2)
     return mass * rise - kinetic
 
 
