@@ -130,7 +130,7 @@ def leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
     return x0 * e0 + x1 * e1 + x2 * e2, alpha, beta, psi
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _to_terrain(geo, i, s0, s1, s2, r, R):
     l0, l1, l2 = mv(geo[1][i], s0, s1, s2)
     attach = geo[0]
@@ -138,18 +138,20 @@ def _to_terrain(geo, i, s0, s1, s2, r, R):
     return r[0] + x0, r[1] + x1, r[2] + x2
 
 
-@njit(cache=True, inline="always")
-def free_footpad(geo, i, shape, r, R):
-    """Terrain position (tuple) of the tip of the stored geometry ZETA = tip(alpha, beta, psi) (FORCE 3.10)."""
+@njit(cache=True)
+def free_footpad(geo, cells, i, mem, shape, r, R):
+    """Terrain position (tuple) of the tip of the stored geometry ZETA = tip(alpha, beta, psi) (FORCE 3.10; cells
+    and mem unused: the telescoping leg's interface)."""
     s0, s1, s2 = footpad(geometry(geo[8], i), shape[0], shape[1], shape[2])
     return _to_terrain(geo, i, s0, s1, s2, r, R)
 
 
 @njit(cache=True)
-def lift_shape(geo, i, alpha, beta, psi, r, R):
+def lift_shape(geo, cells, i, mem, alpha, beta, psi, main, r, R):
     """Stored geometry at lift-off (FORCE 3.10): the peg leg springs back to alpha = 0 at the lift-off psi if
-    its tip clears the terrain there, else the loaded shape is kept."""
-    if free_footpad(geo, i, (0.0, beta, psi), r, R)[2] >= 0.0:
+    its tip clears the terrain there, else the loaded shape is kept (main, the upper cell's deflection,
+    unused: the telescoping leg's interface)."""
+    if free_footpad(geo, cells, i, mem, (0.0, beta, psi), r, R)[2] >= 0.0:
         return 0.0, beta, psi
     return alpha, beta, psi
 

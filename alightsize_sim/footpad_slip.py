@@ -27,12 +27,16 @@ over).
 The slide is a straight line from where the footpad was at the last accepted step, so the footpad's path
 is a polygon with a corner at every step; the step loop bounds the error that leaves (the path error
 footpad_force returns) like the error of any other position.
+
+A scene whose footpads cannot slip passes no friction (mu None): `contact_force` then holds each footpad
+where it touched, and compiled code for such a scene contains no slip search (numba `overload` on mu's type).
 """
 
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from numba import njit, types
+from numba.extending import overload
 
 from .legs import leg_force, main_set
 from .vec3 import mv
@@ -41,6 +45,45 @@ MAX_EXPAND = 200
 MAX_REFINE = 100
 MAX_DIP = 24         # golden-section steps: the dip is found to 1e-5 of the interval
 FLOOR = 1e-6        # N: in-plane force below this never starts a slide (round-off at zero load)
+
+
+def slip_events(mu):
+    """Whether stick-to-slip is located as an event: only when the force drops there (mu_S > mu_D; never for
+    held footpads, mu None)."""
+    return mu is not None and _drops(mu)
+
+
+@njit(cache=True)
+def _drops(mu):
+    return mu[0] > mu[1] * (1.0 + 1e-9)
+
+
+@overload(slip_events)
+def _slip_events(mu):
+    return (lambda mu: False) if isinstance(mu, types.NoneType) else _drops.py_func
+
+
+def contact_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, frc, rte, X):
+    """footpad_force under friction mu = (mu_S, mu_D, the slide's relative tolerance), or with mu None the
+    leg's forces with its footpad held at P0 (no slip search); the same returns."""
+    return (_held if mu is None else _slipping)(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl,
+                                                frc, rte, X)
+
+
+@overload(contact_force)
+def _contact_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, frc, rte, X):
+    return _held if isinstance(mu, types.NoneType) else _slipping
+
+
+def _held(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, frc, rte, X):
+    P[0], P[1], P[2] = P0[0], P0[1], P0[2]
+    power, alpha, beta, psi = leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
+    return 0, power, alpha, beta, psi, 1.0, 0.0, 0.0
+
+
+def _slipping(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, frc, rte, X):
+    return footpad_force(geo, cells, i, mem, shape, P0, sliding, slip_events(mu), mu[0], mu[1], r, R, v, w, P,
+                         defl, frc, rte, X, mu[2])
 
 
 @njit(cache=True, inline="always")
@@ -145,7 +188,7 @@ def _refine(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_lo, h_lo, s_hi, h_hi,
     return c, ok_c
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def footpad_force(geo, cells, i, mem, shape, P0, sliding, hold, mu_s, mu_d, r, R, v, w, P, defl, frc, rte, X, tol):
     """Footpad position P and the leg's forces (written to defl, frc, rte, X) with friction, the slide closed to tol
     (relative); returns (sliding 0/1, cells' power, alpha, beta, psi, static margin mu_S FE3 + FLOOR - FE12 at P0,
@@ -157,7 +200,7 @@ def footpad_force(geo, cells, i, mem, shape, P0, sliding, hold, mu_s, mu_d, r, R
     lifts off there). The path error (m) estimates how far the straight slide from P0 ends from a path that
     turns with the leg's push: half the slide times the change of the push direction along it (the sagitta
     of a uniformly turning path), the step loop's error control for the footpad position."""
-    P[:] = P0
+    P[0], P[1], P[2] = P0[0], P0[1], P0[2]
     fe12, fe3, fe1, fe2, power, alpha, beta, psi = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
     margin = mu_s * max(fe3, 0.0) + FLOOR - fe12
     if (hold and not sliding) or fe12 <= (mu_d if sliding else mu_s) * max(fe3, 0.0) + FLOOR:   # eq. 33-34

@@ -106,8 +106,15 @@ def accel_g(y: np.ndarray, dy: np.ndarray, gravity: np.ndarray) -> np.ndarray:
     return np.einsum("nji,nj->ni", R, dy[:, 3:6] - gravity) / G0
 
 
+HELD_FRICTION = 1e3   # a loaded footpad would slide only under an in-plane force 1,000 times the normal one
 STATUS = {lk.END: "end", lk.BOTTOMED: "bottomed", lk.TIPPED: "tipped", lk.BODY: "body_contact",
           lk.QUIET: "quiet", lk.FAILED: "failed", lk.STABLE: "stable", lk.MEMBER: "member_strike"}
+
+
+def holds(scene: Scene) -> bool:
+    """Whether the scene's footpads cannot slip: static and dynamic friction of HELD_FRICTION or more (the
+    report's non-slip 1.5e6). The simulator then holds each footpad where it touched, with no slip search."""
+    return min(scene.mu_static, scene.mu_dynamic) >= HELD_FRICTION
 
 
 def axisymmetric(inertia: np.ndarray) -> bool:
@@ -127,7 +134,8 @@ class _Run:
             for j, cell in enumerate(leg.cells):
                 self.bottoming[i, j] = cell.curve.bottoming
         # The slide's tolerance follows the integration's: 1e-3 rtol, within 1e-13..1e-8 (docs/simulator.md).
-        self.mu = np.array([scene.mu_static, scene.mu_dynamic, min(max(1e-3 * ctl.rtol, 1e-13), 1e-8)])
+        self.mu = None if holds(scene) else np.array([scene.mu_static, scene.mu_dynamic,
+                                                      min(max(1e-3 * ctl.rtol, 1e-13), 1e-8)])
         self.mem = np.zeros((n, C, 2))
         self.contact = np.zeros(n, np.int64)
         self.P = np.zeros((n, 3))

@@ -18,7 +18,7 @@ import numpy as np
 from numba import njit
 
 from . import crush_cell
-from .footpad_slip import FLOOR, footpad_force
+from .footpad_slip import FLOOR, contact_force, slip_events
 from .rigid_body import free_flight, quat_matrix, quat_rate
 from .stability import hanging_margin, quiescence_momenta, quiescence_update, stable_by_energy, tipping_margins
 from .legs import free_footpad, leg_force, lift_shape, main_set, member_strike
@@ -58,16 +58,25 @@ N_WORK = 7          # leg state arrays of one evaluation: footpads, slip, deflec
 
 
 @njit(cache=True)
+def _copy1(dst, src):
+    """dst[:] = src for 1-D arrays, as a plain loop (numba compiles slice assignment many times slower)."""
+    for k in range(dst.shape[0]):
+        dst[k] = src[k]
+
+
+@njit(cache=True)
+def _copy2(dst, src):
+    """dst[:, :] = src for 2-D arrays, as a plain loop."""
+    for k in range(dst.shape[0]):
+        for m in range(dst.shape[1]):
+            dst[k, m] = src[k, m]
+
+
+@njit(cache=True)
 def new_work(n, C):
     """Leg state arrays of one evaluation for n legs of up to C cells (Pt, slt, dt, ft, Xt, mt, rt)."""
     return (np.zeros((n, 3)), np.zeros(n, np.int64), np.zeros((n, C)), np.zeros((n, C)), np.zeros((n, 3)),
             np.zeros((n, N_MT)), np.zeros((n, C)))
-
-
-@njit(cache=True)
-def slip_events(mu):
-    """Whether stick-to-slip is located as an event: only when the force drops there (mu_S > mu_D)."""
-    return mu[0] > mu[1] * (1.0 + 1e-9)
 
 
 @njit(cache=True)
@@ -109,15 +118,14 @@ def cell_event(cells, cev, which, n):
 @njit(cache=True)
 def _legs(geo, cells, mu, mem, contact, P, sliding, shape, y, Pt, slt, dt, ft, Xt, mt, rt, R):
     """Footpad, slip state, forces and mt = (static margin, reach deficit, alpha, beta, psi, footpad path error)
-    of every leg at state y (mu = mu_S, mu_D, the slide's relative tolerance); returns the cells' power."""
+    of every leg at state y (mu = mu_S, mu_D, the slide's relative tolerance, or None: footpads held); returns
+    the cells' power."""
     r, v, w = y[0:3], y[3:6], y[10:13]
-    hold = slip_events(mu)
     power = 0.0
     for i in range(len(contact)):
         if contact[i]:
-            sl, pw, mt[i, 2], mt[i, 3], mt[i, 4], mt[i, 0], mt[i, 1], mt[i, 5] = footpad_force(
-                geo, cells, i, mem[i], shape[i], P[i], sliding[i], hold, mu[0], mu[1], r, R, v, w, Pt[i], dt[i], ft[i],
-                rt[i], Xt[i], mu[2])
+            sl, pw, mt[i, 2], mt[i, 3], mt[i, 4], mt[i, 0], mt[i, 1], mt[i, 5] = contact_force(
+                geo, cells, i, mem[i], shape[i], P[i], sliding[i], mu, r, R, v, w, Pt[i], dt[i], ft[i], rt[i], Xt[i])
             slt[i] = sl
             power += pw
         else:
@@ -194,7 +202,11 @@ def _first(g_prev, g):
 def _fly(y, h, inertia, gravity, out):
     """out = the state h after y in free flight, closed form (eq. 62-88)."""
     r, v, q, w = free_flight(y[0:3], y[3:6], y[6:10], y[10:13], inertia, gravity, h)
-    out[0:3], out[3:6], out[6:10], out[10:13], out[13] = r, v, q, w, y[13]
+    for c in range(3):
+        out[c], out[3 + c], out[10 + c] = r[c], v[c], w[c]
+    for c in range(4):
+        out[6 + c] = q[c]
+    out[13] = y[13]
 
 
 @njit(cache=True)
@@ -205,7 +217,8 @@ def _stage(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, sha
     Pt, slt, dt, ft, Xt, mt, rt = work
     if flight:
         _fly(y, h, inertia, gravity, y1)
-        err[:] = 0.0
+        for c in range(NY):
+            err[c] = 0.0
         rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape, y1, K[6], *work)
         return
     yi = y1                                                     # stage state, overwritten below
@@ -242,8 +255,8 @@ def _commit(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, ener
         if not contact[i]:
             continue
         known = last[i, 2 * C] > 0.0
-        P[i] = Pt[i]
-        shape[i] = mt[i, 2:5]
+        for c in range(3):
+            P[i, c], shape[i, c] = Pt[i, c], mt[i, 2 + c]
         sliding[i] = slt[i]
         if not sliding[i] and mt[i, 0] < 0.0:                     # eq. 33: a held footpad past mu_S slides
             sliding[i], started = 1, True
@@ -338,7 +351,7 @@ def _monitor(geo, cells, mass, inertia, gravity, bottoming, up, body, order, mem
         k = 0
         for m in range(n):
             if contact[order[m]]:
-                pads[k] = P[order[m]]
+                pads[k, 0], pads[k, 1], pads[k, 2] = P[order[m], 0], P[order[m], 1], P[order[m], 2]
                 k += 1
         margins = tipping_margins(y[0:3], y[3:6], R, y[10:13], mass, inertia, gravity, pads, True)
         if on_ground == n:
@@ -369,7 +382,7 @@ def _hanging_clear(geo, cells, mass, inertia, gravity, order, mem, contact, P, s
             a = (a - 1) % n
         while not contact[order[b]]:
             b = (b + 1) % n
-        foot = np.array(free_footpad(geo, cells, i, mem[i], shape[i], y[0:3], R))
+        foot = free_footpad(geo, cells, i, mem[i], shape[i], y[0:3], R)
         if not (foot[2] > 0.0 and hanging_margin(y[0:3], y[3:6], y[10:13], mass, inertia, gravity, P[order[a]],
                                                  P[order[b]], foot) > 0.0):   # NaN is not clear
             return False
@@ -426,8 +439,8 @@ def _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, y1, K
     integration): (time estimate, slope of the crossing function there, its index)."""
     Pt, slt, dt, ft, Xt, mt, rt = work
     a, b, side = 0.0, h, 0
-    ga[:] = g_prev
-    gb[:] = g1
+    _copy1(ga, g_prev)
+    _copy1(gb, g1)
     fa, fb = ga[j], gb[j]
     for _ in range(60):
         if b - a <= tol:
@@ -446,14 +459,14 @@ def _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, y1, K
             if k != j:
                 j, fa, side = k, ga[k], 0
             b = m
-            gb[:] = gm
+            _copy1(gb, gm)
             fb = gb[j]
             if side == -1:
                 fa *= 0.5
             side = -1
         else:
             a = m
-            ga[:] = gm
+            _copy1(ga, gm)
             fa = ga[j]
             if side == 1:
                 fb *= 0.5
@@ -465,13 +478,13 @@ def _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, y1, K
 @njit(cache=True)
 def _copy_work(src, dst):
     """Copy the leg state arrays of one evaluation (footpads, slip, deflections, forces, margins, rates)."""
-    dst[0][:] = src[0]
-    dst[1][:] = src[1]
-    dst[2][:] = src[2]
-    dst[3][:] = src[3]
-    dst[4][:] = src[4]
-    dst[5][:] = src[5]
-    dst[6][:] = src[6]
+    _copy2(dst[0], src[0])
+    _copy1(dst[1], src[1])
+    _copy2(dst[2], src[2])
+    _copy2(dst[3], src[3])
+    _copy2(dst[4], src[4])
+    _copy2(dst[5], src[5])
+    _copy2(dst[6], src[6])
 
 
 @njit(cache=True)
@@ -532,7 +545,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
             est, slope, j = _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, y1, K, h, j,
                                    g_prev, g1, 0.1 * tol, yt, gm, ga, gb, work, flight, inertia, gravity)
             lo, hi, side, mid, a_hi, newton, e_trial = 0.0, h, 0, -1.0, g1[j], 0, 0.0
-            g_lo[:] = g_prev
+            _copy1(g_lo, g_prev)
             f_lo, f_hi = g_prev[j], g1[j]
             while hi - lo > tol:
                 if lo > 0.0 and (g_lo[j] <= (FLOOR if n <= j < 2 * n else GTOL) or g_lo[j] <= -slope * tol
@@ -565,8 +578,8 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                     side = -1
                 else:
                     lo, f_lo = mid, g1[j]
-                    g_lo[:] = g1
-                    y_lo[:] = y1
+                    _copy1(g_lo, g1)
+                    _copy1(y_lo, y1)
                     _copy_work(work, work_lo)
                     est = lo + g1[j] / -slope
                     if side == 1:
@@ -578,11 +591,11 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                 continue
             forced, h_acc = j, lo
             if lo == 0.0:                              # the crossing is within event_tol of the start
-                y1[:] = y
+                _copy1(y1, y)
                 rhs(*args, y1, K[6], *work)
                 cnt[K_RHS] += 1
             else:
-                y1[:] = y_lo
+                _copy1(y1, y_lo)
                 _copy_work(work_lo, work)
         else:
             forced, h_acc = -1, h
@@ -592,8 +605,10 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
         if stalled > MAX_STALL:
             return FAILED, t
         t += h_acc
-        y[:] = y1
-        y[6:10] /= np.sqrt(y[6] ** 2 + y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
+        _copy1(y, y1)
+        qn = np.sqrt(y[6] ** 2 + y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
+        for c in range(6, 10):
+            y[c] /= qn
         cnt[K_STEPS] += 1
         changed = _commit(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, energy, last, work, g1)
         if forced >= 2 * n:
@@ -604,25 +619,28 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
         if k > 0 and t <= H_t[k - 1]:
             k -= 1                                     # an event at the start of a step replaces its record
         H_t[k] = t
-        H_y[k] = y
+        _copy1(H_y[k], y)
         for i in range(n):
-            if contact[i]:
-                H_d[k, i], H_f[k, i], H_X[k, i] = dt[i], ft[i], Xt[i]
-            else:
-                H_d[k, i], H_f[k, i], H_X[k, i] = np.nan, 0.0, 0.0
-        H_P[k, :, :] = P
-        H_c[k] = contact
+            for c in range(n_cell):
+                on = contact[i] > 0
+                H_d[k, i, c], H_f[k, i, c] = (dt[i, c], ft[i, c]) if on else (np.nan, 0.0)
+            for c in range(3):
+                H_X[k, i, c] = Xt[i, c] if contact[i] else 0.0
+        _copy2(H_P[k], P)
+        _copy1(H_c[k], contact)
         if forced < 0 and not changed:
-            K[0] = K[6]                               # first same as last: memory updates keep the force
+            _copy1(K[0], K[6])                        # first same as last: memory updates keep the force
         else:
             if 0 <= forced < n:
                 switch(geo, cells, mem, contact, P, sliding, shape, armed, y, forced, last, work)
             rhs(*args, y, K[0], *work)
             cnt[K_RHS] += 1
-            for i in range(n):                         # a slide that jumps here (it starts with mu_S > mu_D, or a
-                if contact[i] and slt[i]:              # touchdown) starts the next step where it lands, so that
-                    P[i] = Pt[i]                       # the step's slide and its path error vanish with h
-        H_dy[k] = K[0]
+            # A slide that jumps here (it starts with mu_S > mu_D, or a touchdown) starts the next step where it
+            # lands, so that the step's slide and its path error vanish with h.
+            for i in range(n):
+                if contact[i] and slt[i]:
+                    P[i, 0], P[i, 1], P[i, 2] = Pt[i, 0], Pt[i, 1], Pt[i, 2]
+        _copy1(H_dy[k], K[0])
         cnt[K_HIST] = k + 1
         _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt, mt, g_prev, False)
         # A footpad that is out of reach from the start (a touchdown or slide start leaving it beyond the
@@ -636,7 +654,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                 armed[i] = LOCKED
                 rhs(*args, y, K[0], *work)
                 cnt[K_RHS] += 1
-                H_dy[k] = K[0]
+                _copy1(H_dy[k], K[0])
                 _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt, mt, g_prev, False)
         if fixed:
             h = ctl[C_FIXED]

@@ -7,12 +7,17 @@ cells = (deflections (n,C,K), forces (n,C,K), n_points (n,C), k, c, yield force 
 Cell 0 is the leg's main cell (telescoping axial, articulated upper): the leg lifts off when it goes slack.
 A leg's shape (n,3) is its (alpha, beta, psi) at the last accepted step on the ground and the stored free
 geometry off it (psi unused by telescoping legs).
+
+A set of legs of one kind packs the other kind's arrays (pad angles, articulated rows) as None: compiled
+code then takes that kind's functions alone (numba `overload` on geo's type), so a telescoping scene never
+compiles the articulated leg and vice versa. Called from Python, the functions test each leg's kind.
 """
 
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from numba import njit, types
+from numba.extending import overload
 
 from . import articulated_leg, crush_cell, telescoping_leg
 from .articulated_leg import N_ART, ArticulatedLeg
@@ -45,7 +50,9 @@ def pack(legs: tuple[TelescopingLeg | ArticulatedLeg, ...]):
             cd[i, j, :len(d)], cf[i, j, :len(d)], cn[i, j] = d, f, len(d)
             ck[i, j], cc[i, j], cy[i, j] = k, c, y
     geo = (np.array([leg.attach for leg in legs], float), np.array([leg.to_body for leg in legs], float), reach,
-           lever, angles, np.array([len(leg.cells) - 1 for leg in legs], np.int64), small, kind, art)
+           lever, angles if np.any(kind == TELESCOPING) else None, np.array([len(leg.cells) - 1 for leg in legs],
+                                                                             np.int64), small, kind,
+           art if np.any(kind == ARTICULATED) else None)
     return geo, (cd, cf, cn, ck, cc, cy)
 
 
@@ -54,14 +61,25 @@ def initial_shape(legs) -> np.ndarray:
     return np.array([[0.0, 0.0, leg.psi0 if isinstance(leg, ArticulatedLeg) else 0.0] for leg in legs])
 
 
-@njit(cache=True, inline="always")
+def _kinds(geo) -> tuple[bool, bool]:
+    """(telescoping, articulated): the leg kinds a packed geo holds, from its numba type."""
+    return not isinstance(geo[4], types.NoneType), not isinstance(geo[8], types.NoneType)
+
+
 def leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
     """Forces of leg i with its footpad held at P (see the kind's module); returns (cells' power, alpha, beta,
     psi)."""
     if geo[7][i] == ARTICULATED:
         return articulated_leg.leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
-    power, alpha, beta, _ = telescoping_leg.leg_force(geo, cells, i, mem, P, r, R, v, w, defl, frc, rte, X)
-    return power, alpha, beta, 0.0
+    return telescoping_leg.leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
+
+
+@overload(leg_force)
+def _leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
+    tel, art = _kinds(geo)
+    if tel and art:
+        return leg_force
+    return articulated_leg.leg_force.py_func if art else telescoping_leg.leg_force.py_func
 
 
 @njit(cache=True, inline="always")
@@ -70,29 +88,47 @@ def main_set(cells, i, mem):
     return crush_cell.permanent_set(cells[3][i, 0], mem[0, 0], mem[0, 1])
 
 
-@njit(cache=True, inline="always")
 def free_footpad(geo, cells, i, mem, shape, r, R):
     """Terrain position (tuple) of a free leg's footpad: its stored geometry."""
     if geo[7][i] == ARTICULATED:
-        return articulated_leg.free_footpad(geo, i, shape, r, R)
+        return articulated_leg.free_footpad(geo, cells, i, mem, shape, r, R)
     return telescoping_leg.free_footpad(geo, cells, i, mem, shape, r, R)
 
 
-@njit(cache=True)
+@overload(free_footpad)
+def _free_footpad(geo, cells, i, mem, shape, r, R):
+    tel, art = _kinds(geo)
+    if tel and art:
+        return free_footpad
+    return articulated_leg.free_footpad.py_func if art else telescoping_leg.free_footpad.py_func
+
+
 def lift_shape(geo, cells, i, mem, alpha, beta, psi, main, r, R):
-    """Stored free geometry of a leg lifting off with the given shape and main-cell deflection. A telescoping
-    leg keeps (alpha, beta) and the compression beyond its set it still held (zero unless the lift-off was
-    located at a jump of its event function, a slide leaving the leg's reach), so that its free footpad starts
-    where it left the terrain, not below it, and its touchdown can be found."""
+    """Stored free geometry of a leg lifting off with the given shape and main-cell deflection (see the kind's
+    module)."""
     if geo[7][i] == ARTICULATED:
-        return articulated_leg.lift_shape(geo, i, alpha, beta, psi, r, R)
-    return alpha, beta, max(main - main_set(cells, i, mem), 0.0)
+        return articulated_leg.lift_shape(geo, cells, i, mem, alpha, beta, psi, main, r, R)
+    return telescoping_leg.lift_shape(geo, cells, i, mem, alpha, beta, psi, main, r, R)
 
 
-@njit(cache=True)
+@overload(lift_shape)
+def _lift_shape(geo, cells, i, mem, alpha, beta, psi, main, r, R):
+    tel, art = _kinds(geo)
+    if tel and art:
+        return lift_shape
+    return articulated_leg.lift_shape.py_func if art else telescoping_leg.lift_shape.py_func
+
+
 def member_strike(geo, contact, shape, r, R):
     """Index of an articulated leg on the ground whose fulcrum ring is below the terrain, or -1."""
     for i in range(len(contact)):
         if contact[i] and geo[7][i] == ARTICULATED and articulated_leg.ring_clearance(geo, i, shape[i, 2], r, R) < 0.0:
             return i
     return -1
+
+
+@overload(member_strike)
+def _member_strike(geo, contact, shape, r, R):
+    if _kinds(geo)[1]:
+        return member_strike
+    return lambda geo, contact, shape, r, R: -1

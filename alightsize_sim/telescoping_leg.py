@@ -65,11 +65,12 @@ def cell_force(cells, i, j, mem, delta, rate):
                             delta, rate)
 
 
-@njit(cache=True, inline="always")
-def leg_force(geo, cells, i, mem, P, r, R, v, w, defl, frc, rte, X):
+@njit(cache=True)
+def leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
     """Forces of leg i with its footpad held at P (terrain axes) under a capsule at r, attitude R (principal ->
-    terrain), velocity v (terrain), rate w (principal). Writes the deflections, cell forces, deflection rates and
-    the force X on the capsule (principal axes); returns (cells' power, alpha, beta, al)."""
+    terrain), velocity v (terrain), rate w (principal); `shape` is unused (the articulated leg's interface).
+    Writes the deflections, cell forces, deflection rates and the force X on the capsule (principal axes);
+    returns (cells' power, alpha, beta, 0)."""
     attach, to_body, rho, pad_lever, angles, n_pads, small = geo[0], geo[1], geo[2], geo[3], geo[4], geo[5], geo[6]
     a0, a1, a2 = attach[i, 0], attach[i, 1], attach[i, 2]
     L = to_body[i]
@@ -111,7 +112,7 @@ def leg_force(geo, cells, i, mem, P, r, R, v, w, defl, frc, rte, X):
     fa, fb = q_alpha / al, q_beta * ratio / al
     X[0], X[1], X[2] = mv(L, -frc[0] * u[0] + fa * ea[0] + fb * eb[0], -frc[0] * u[1] + fa * ea[1] + fb * eb[1],
                           -frc[0] * u[2] + fa * ea[2])              # eq. 25-27
-    return power, alpha, beta, al
+    return power, alpha, beta, 0.0
 
 
 @njit(cache=True, inline="always")
@@ -120,7 +121,7 @@ def axial_set(cells, i, mem):
     return crush_cell.permanent_set(cells[3][i, 0], mem[0, 0], mem[0, 1])
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def footpad_at(geo, i, length, alpha, beta, r, R):
     """Terrain position (tuple) of leg i's footpad at length and leg-axes direction (alpha, beta) (eq. 13-15)."""
     attach, to_body = geo[0], geo[1]
@@ -130,10 +131,19 @@ def footpad_at(geo, i, length, alpha, beta, r, R):
     return r[0] + x0, r[1] + x1, r[2] + x2
 
 
-@njit(cache=True, inline="always")
-def free_footpad(geo, cells, i, mem, tilt, r, R):
+@njit(cache=True)
+def free_footpad(geo, cells, i, mem, shape, r, R):
     """Unloaded footpad in terrain axes (eq. 13): length rho less the axial permanent set, at the tilt the
-    leg had when it last left the ground; tilt = (alpha, beta, held), held the axial compression beyond the
-    set the leg still had as it left (legs.lift_shape), which it keeps in the air."""
-    return footpad_at(geo, i, geo[2][i] - axial_set(cells, i, mem) - tilt[2], tilt[0], tilt[1], r, R)
+    leg had when it last left the ground; shape = (alpha, beta, held), held the axial compression beyond the
+    set the leg still had as it left (lift_shape), which it keeps in the air."""
+    return footpad_at(geo, i, geo[2][i] - axial_set(cells, i, mem) - shape[2], shape[0], shape[1], r, R)
+
+
+@njit(cache=True)
+def lift_shape(geo, cells, i, mem, alpha, beta, psi, main, r, R):
+    """Stored free geometry of a leg lifting off at tilt (alpha, beta) with axial deflection `main`: the tilt and
+    the compression beyond its set it still held (zero unless the lift-off was located at a jump of its event
+    function, a slide leaving the leg's reach), so that its free footpad starts where it left the terrain, not
+    below it, and its touchdown can be found (psi, r, R unused: the articulated leg's interface)."""
+    return alpha, beta, max(main - axial_set(cells, i, mem), 0.0)
 

@@ -121,7 +121,7 @@ def _run(run):
 def test_tables_3_and_4():
     """All 242 runs of Tables 3-4: no failed run, closure below 1e-4 on every run (issue 5), and the outcome
     classes read as the printed ones (time-out and walking share the printed "+") on at least 166 runs
-    (measured 172 of 242: 105/130 and 67/112; the 4 "ND" runs cannot agree since no run here fails; the floor
+    (measured 171 of 242: 104/130 and 67/112; the 4 "ND" runs cannot agree since no run here fails; the floor
     is 6 runs under the measurement, for floating-point differences between machines on runs near a class
     boundary). The matrices include the 3 rad/s roll runs (issue 5's hard case)."""
     runs = [r for t in ("table3", "table4") for r in read_study(EX / "studies" / f"{t}.toml").runs]

@@ -294,3 +294,47 @@ def free_footpad_of(geo, cells, mem, shape, R):
     """Leg 0's unloaded footpad under a capsule at the origin with attitude R (terrain axes)."""
     from alightsize_sim.legs import free_footpad
     return free_footpad(geo, cells, 0, mem, shape, np.zeros(3), R)
+
+
+@pytest.mark.parametrize("name", ["telescoping_config2", "articulated_config5"])
+def test_a_scene_that_cannot_slip_holds_its_footpads_without_a_slip_search(name, monkeypatch):
+    """The report's non-slip friction (1.5e6) runs the held-footpad model (no slip search compiled or run):
+    every footpad stays where it touched while on the ground. Until the step before the first lift-off the slip
+    model at that friction never slides a loaded footpad, so the two landings are the same to round-off (1e-9) and
+    so is the peak XDD(3), which falls in the first impact (1e-6). They part where a leg unloads through
+    lift-off: the slip model lets its footpad slide once the normal force is gone, the held one keeps it."""
+    from alightsize_sim import landing
+    cfg = read_scene(f"{SCENES}/{name}.toml")
+    assert landing.holds(cfg.scene)
+    held = simulate(cfg.scene, cfg.controls)
+    on = held.contact[1:] & held.contact[:-1]
+    assert np.array_equal(held.footpad[1:][on], held.footpad[:-1][on])
+    monkeypatch.setattr(landing, "HELD_FRICTION", np.inf)
+    slip = simulate(cfg.scene, cfg.controls)
+    assert np.max(np.abs(held.accel_g[:, 2])) == pytest.approx(np.max(np.abs(slip.accel_g[:, 2])), rel=1e-6)
+    lift = int(np.argmax(np.any(held.contact[:-1] & ~held.contact[1:].astype(bool), axis=1)))
+    assert lift > 10
+    assert np.array_equal(held.t[:lift - 1], slip.t[:lift - 1])      # the last step to lift-off differs
+    assert np.allclose(held.y[:lift - 1], slip.y[:lift - 1], rtol=1e-9, atol=1e-12)
+    assert held.energy["closure_rel"] < 1e-6
+
+
+@pytest.mark.parametrize("name, kind", [("telescoping_config2", "telescoping_leg"),
+                                        ("articulated_config5", "articulated_leg")])
+def test_compiled_code_for_one_leg_kind_takes_that_kind_alone(name, kind):
+    """A set of legs of one kind packs the other kind's arrays as None, and the compiled dispatch (numba
+    overload on geo's type) resolves to that kind's functions: the other kind is never compiled. A held
+    scene (mu None) resolves to the held contact, a slipping one to the slip search."""
+    import numba
+    from alightsize_sim import articulated_leg, footpad_slip, legs, telescoping_leg
+    geo, _ = legs.pack(read_scene(f"{SCENES}/{name}.toml").scene.legs)
+    assert (geo[4] is None) == (kind == "articulated_leg") and (geo[8] is None) == (kind == "telescoping_leg")
+    module = {"telescoping_leg": telescoping_leg, "articulated_leg": articulated_leg}[kind]
+    t = numba.typeof(geo)
+    assert legs._leg_force(t, *[None] * 13) is module.leg_force.py_func
+    assert legs._free_footpad(t, *[None] * 6) is module.free_footpad.py_func
+    assert legs._lift_shape(t, *[None] * 9) is module.lift_shape.py_func
+    none, arr = numba.types.none, numba.typeof(np.zeros(3))
+    args = [None] * 7
+    assert footpad_slip._contact_force(*args, none, *[None] * 9) is footpad_slip._held
+    assert footpad_slip._contact_force(*args, arr, *[None] * 9) is footpad_slip._slipping
