@@ -1,11 +1,12 @@
 """One line on stderr while numba compiles the simulator (a fresh install's first run), and its time after.
 
 Compiled kernels are cached on disk (numba `cache=True`); numba reports a compilation only on a cache miss, so
-later runs print nothing.
+later runs print nothing. Worker processes forked from the announcing one stay silent.
 """
 
 from __future__ import annotations
 
+import os
 import sys
 import time
 from contextlib import contextmanager
@@ -19,8 +20,11 @@ class _Notice(event.Listener):
 
     def __init__(self, stream: TextIO):
         self.stream, self.depth, self.started, self.seconds = stream, 0, None, 0.0
+        self.pid = os.getpid()
 
     def on_start(self, ev: event.Event) -> None:
+        if os.getpid() != self.pid:
+            return
         if self.depth == 0:
             if self.started is None:
                 print("alightsize: compiling the landing simulator for this machine (first run only; cached after)...",
@@ -29,6 +33,8 @@ class _Notice(event.Listener):
         self.depth += 1
 
     def on_end(self, ev: event.Event) -> None:
+        if os.getpid() != self.pid:
+            return
         self.depth -= 1
         if self.depth == 0:
             self.seconds += time.perf_counter() - self.started

@@ -9,6 +9,7 @@ it (the runs it held are retried alone, and one that kills its worker twice is s
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import multiprocessing
 import os
@@ -147,9 +148,24 @@ def _executor(workers: int) -> ProcessPoolExecutor:
     return ProcessPoolExecutor(workers, mp_context=_pool_context(), initializer=_ignore_sigint)
 
 
+def _warm(task: dict) -> None:
+    """Compile the simulator for a task's scene here, before the workers start: forked workers inherit it (spawned
+    ones load it from numba's disk cache) instead of each compiling it. A 10 us landing; any error is left for
+    the task itself to report."""
+    from alightsize_sim.landing import simulate
+    from alightsize.model.scene_config import read_scene
+    try:
+        cfg = read_scene(task["scene"], task["overrides"])
+        simulate(cfg.scene, dataclasses.replace(cfg.controls, t_final=1e-5))
+    except Exception:                                  # noqa: BLE001 - the task's own run reports it
+        pass
+
+
 def _pool(tasks: list[dict], workers: int) -> Iterator[dict]:
-    """A local process pool; after a worker dies, the runs it may have held are retried one at a time."""
+    """A local process pool, the simulator compiled before it forks; after a worker dies, the runs it may have
+    held are retried one at a time."""
     pending, suspects = list(tasks), []
+    _warm(pending[0])
     while pending or suspects:
         if suspects:                                   # alone in a fresh worker: a crash now is this run's
             task, pool = suspects.pop(0), _executor(1)
