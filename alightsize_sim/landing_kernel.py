@@ -54,7 +54,6 @@ ARM = 1e-7          # m: a leg's next switch is armed once it is this far from i
 LOCKED = -1         # armed[i]: a leg that left at once on touching stays unarmed until it touches again
 BAND = 1e-4         # m: an unarmed leg switches only this far past zero (grazing contact never chatters)
 PATH_FLOOR = 100.0  # event_tol: steps this short or shorter skip the footpad path error (_error_norm)
-N_WORK = 7          # leg state arrays of one evaluation: footpads, slip, deflections, forces, X, mt, deflection rates
 
 
 @njit(cache=True)

@@ -61,9 +61,13 @@ def initial_shape(legs) -> np.ndarray:
     return np.array([[0.0, 0.0, leg.psi0 if isinstance(leg, ArticulatedLeg) else 0.0] for leg in legs])
 
 
-def _kinds(geo) -> tuple[bool, bool]:
-    """(telescoping, articulated): the leg kinds a packed geo holds, from its numba type."""
-    return not isinstance(geo[4], types.NoneType), not isinstance(geo[8], types.NoneType)
+def _pick(geo, mixed, name: str):
+    """What compiled code runs for a packed geo's numba type: `mixed` (the per-leg test) when it holds both leg
+    kinds, else the one kind's function `name` (the other kind's arrays are None)."""
+    tel, art = not isinstance(geo[4], types.NoneType), not isinstance(geo[8], types.NoneType)
+    if tel and art:
+        return mixed
+    return getattr(articulated_leg if art else telescoping_leg, name).py_func
 
 
 def leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
@@ -76,10 +80,7 @@ def leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
 
 @overload(leg_force)
 def _leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
-    tel, art = _kinds(geo)
-    if tel and art:
-        return leg_force
-    return articulated_leg.leg_force.py_func if art else telescoping_leg.leg_force.py_func
+    return _pick(geo, leg_force, "leg_force")
 
 
 @njit(cache=True, inline="always")
@@ -97,10 +98,7 @@ def free_footpad(geo, cells, i, mem, shape, r, R):
 
 @overload(free_footpad)
 def _free_footpad(geo, cells, i, mem, shape, r, R):
-    tel, art = _kinds(geo)
-    if tel and art:
-        return free_footpad
-    return articulated_leg.free_footpad.py_func if art else telescoping_leg.free_footpad.py_func
+    return _pick(geo, free_footpad, "free_footpad")
 
 
 def lift_shape(geo, cells, i, mem, alpha, beta, psi, main, r, R):
@@ -113,10 +111,7 @@ def lift_shape(geo, cells, i, mem, alpha, beta, psi, main, r, R):
 
 @overload(lift_shape)
 def _lift_shape(geo, cells, i, mem, alpha, beta, psi, main, r, R):
-    tel, art = _kinds(geo)
-    if tel and art:
-        return lift_shape
-    return articulated_leg.lift_shape.py_func if art else telescoping_leg.lift_shape.py_func
+    return _pick(geo, lift_shape, "lift_shape")
 
 
 def member_strike(geo, contact, shape, r, R):
@@ -129,6 +124,6 @@ def member_strike(geo, contact, shape, r, R):
 
 @overload(member_strike)
 def _member_strike(geo, contact, shape, r, R):
-    if _kinds(geo)[1]:
-        return member_strike
-    return lambda geo, contact, shape, r, R: -1
+    if isinstance(geo[8], types.NoneType):                 # no articulated leg: no member can strike
+        return lambda geo, contact, shape, r, R: -1
+    return member_strike
