@@ -81,9 +81,8 @@ def leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
     """Forces of leg i with its footpad held at P (terrain axes) under a capsule at r, attitude R (principal ->
     terrain), velocity v (terrain), rate w (principal), the shape of the last accepted step choosing the root.
     Writes the cell deflections, forces and deflection rates and the force X on the capsule (principal axes);
-    returns (power,
-    alpha, beta, psi). Out of reach (no root), the upper deflection is written as -1 m (short of any set: the
-    leg lifts off) and the forces are zero."""
+    returns (power, alpha, beta, psi). Out of reach (no root), the upper deflection is written as -1 m (short of
+    any set: the leg lifts off) and the forces and rates are zero."""
     attach, L, art = geo[0], geo[1][i], geo[8]
     g = geometry(art, i)
     b0, b1, b2 = mtv(R, P[0] - r[0], P[1] - r[1], P[2] - r[2])     # CG -> footpad, principal axes
@@ -116,16 +115,17 @@ def leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
     alpha_dot = (m11 * e2 - m21 * er) / det
     lever1 = g.AU * upper_lever(g, psi)                             # d Delta_1 / d psi (eq. 45-46, 49)
     d1 = upper_length(g, psi) - art[i, N_ART - 1]
-    f1 = cell_force(cells, i, 0, mem, d1, lever1 * psi_dot)
+    rte[0] = lever1 * psi_dot
+    f1 = cell_force(cells, i, 0, mem, d1, rte[0])
     lever2 = lower_lever(g, alpha)                                  # d Delta_2 / d alpha (eq. 47-48, FP4)
     d2 = lower_deflection(g, alpha)
-    f2 = cell_force(cells, i, 1, mem, d2, lever2 * alpha_dot)
+    rte[1] = lever2 * alpha_dot
+    f2 = cell_force(cells, i, 1, mem, d2, rte[1])
     af2 = f2 + return_spring_force(g, d2)
     x0, x1, x2 = ground_components(g, sa, ca, sb, cb, sp, cp, lever1 / g.AU * f1, lever2 * af2)   # eq. 59-61
     k = min(alpha / SEAT, 1.0)
     x0, x1, x2 = k * x0, k * x1, k * x2 + (1.0 - k) * lever1 * f1 / (g.AU * cp)   # seated: FORCE's alpha <= 1e-5
     defl[0], defl[1], frc[0], frc[1] = d1, d2, f1, f2
-    rte[0], rte[1] = lever1 * psi_dot, lever2 * alpha_dot
     X[0], X[1], X[2] = mv(L, x0, x1, x2)
     return x0 * e0 + x1 * e1 + x2 * e2, alpha, beta, psi
 

@@ -130,8 +130,8 @@ def _dip(geo, cells, i, mem, shape, mu, P0, d0, d1, a, h_a, b, r, R, v, w, P, de
 
 
 @njit(cache=True)
-def _refine(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_lo, h_lo, s_hi, h_hi, ok_hi, r, R, v, w, P, defl, frc, rte, X,
-            tol: float) -> tuple[float, bool]:
+def _refine(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_lo, h_lo, s_hi, h_hi, ok_hi, r, R, v, w, P, defl, frc,
+            rte, X, tol: float) -> tuple[float, bool]:
     """Close the bracket [s_lo, s_hi] (excess h_lo > 0; h_hi <= 0, or s_hi out of reach) to tol of the reach, or
     until the excess is within tol of the force scale: bisection while the far end is out of reach, then
     Brent's method (Brent 1973, ch. 4: inverse quadratic interpolation, secant or bisection; steps of at least
@@ -208,7 +208,8 @@ def footpad_force(geo, cells, i, mem, shape, P0, sliding, hold, mu_s, mu_d, r, R
     h0 = fe12 - mu_d * max(fe3, 0.0)
     if h0 <= 0.0:                                               # static limit exceeded, dynamic one not
         return 1, power, alpha, beta, psi, margin, 0.0, 0.0
-    return _slide(geo, cells, i, mem, shape, P0, mu_d, r, R, v, w, P, defl, frc, rte, X, tol, fe1, fe2, fe12, h0, margin)
+    return _slide(geo, cells, i, mem, shape, P0, mu_d, r, R, v, w, P, defl, frc, rte, X, tol, fe1, fe2, fe12, h0,
+                  margin)
 
 
 @njit(cache=True)

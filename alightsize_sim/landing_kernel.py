@@ -79,6 +79,12 @@ def new_work(n, C):
 
 
 @njit(cache=True)
+def n_events(n, C):
+    """Number of event functions for n legs of up to C cells (see _events)."""
+    return (2 + 2 * C) * n
+
+
+@njit(cache=True)
 def cell_events(cells, mem):
     """Event memory of every cell (n, C, 2): whether its turn to unloading is watched (set while it loads, its
     deflection a new maximum and rising) and the index of the next corner of its loading curve past its
@@ -213,7 +219,6 @@ def _stage(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, sha
     """One Dormand-Prince step of size h from y with K[0] = f(y): y1, the error estimate, K[6] = f(y1); the
     work arrays are left holding the legs at y1 (the last stage is evaluated there). With `flight` (no leg
     on the ground, axisymmetric body) the step is the closed form of eq. 62-88, exact."""
-    Pt, slt, dt, ft, Xt, mt, rt = work
     if flight:
         _fly(y, h, inertia, gravity, y1)
         for c in range(NY):
@@ -494,7 +499,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
     n, n_cell = mem.shape[0], mem.shape[1]
     K = np.zeros((7, NY))
     y1, err = np.empty(NY), np.empty(NY)
-    n_g = (2 + 2 * n_cell) * n
+    n_g = n_events(n, n_cell)
     g_prev, g1, g_lo = np.empty(n_g), np.empty(n_g), np.empty(n_g)
     work, work_lo = new_work(n, n_cell), new_work(n, n_cell)
     Pt, slt, dt, ft, Xt, mt, rt = work
@@ -620,11 +625,11 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
         H_t[k] = t
         _copy1(H_y[k], y)
         for i in range(n):
+            on = contact[i] > 0
             for c in range(n_cell):
-                on = contact[i] > 0
                 H_d[k, i, c], H_f[k, i, c] = (dt[i, c], ft[i, c]) if on else (np.nan, 0.0)
             for c in range(3):
-                H_X[k, i, c] = Xt[i, c] if contact[i] else 0.0
+                H_X[k, i, c] = Xt[i, c] if on else 0.0
         _copy2(H_P[k], P)
         _copy1(H_c[k], contact)
         if forced < 0 and not changed:

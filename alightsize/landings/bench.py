@@ -106,7 +106,7 @@ def scipy_landing(cfg: SceneConfig, ctl: Controls, method: str) -> tuple[dict, i
     run = _Run(s, ctl)
     y = initial_state(s, run)
     n = run.n
-    n_g = (2 + 2 * run.C) * n
+    n_g = lk.n_events(n, run.C)
     work, g_prev, g = run.work, np.empty(n_g), np.empty(n_g)
     nfev = steps = 0
     peak, t = 0.0, 0.0
