@@ -38,18 +38,18 @@ import numpy as np
 from numba import njit, types
 from numba.extending import overload
 
+from .footpad_mass import FLOOR, is_pad, pad_force
 from .legs import leg_force, main_set
 from .vec3 import mv
 
 MAX_EXPAND = 200
 MAX_REFINE = 100
 MAX_DIP = 24         # golden-section steps: the dip is found to 1e-5 of the interval
-FLOOR = 1e-6        # N: in-plane force below this never starts a slide (round-off at zero load)
 
 
 def slip_events(mu):
     """Whether stick-to-slip is located as an event: only when the force drops there (mu_S > mu_D; never for
-    held footpads, mu None)."""
+    held footpads, mu None; always for footpads with mass, whose band is located too)."""
     return mu is not None and _drops(mu)
 
 
@@ -60,28 +60,33 @@ def _drops(mu):
 
 @overload(slip_events)
 def _slip_events(mu):
-    return (lambda mu: False) if isinstance(mu, types.NoneType) else _drops.py_func
+    if isinstance(mu, types.NoneType):
+        return lambda mu: False
+    return (lambda mu: True) if is_pad(mu) else _drops.py_func
 
 
-def contact_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, frc, rte, X):
-    """footpad_force under friction mu = (mu_S, mu_D, the slide's relative tolerance), or with mu None the
-    leg's forces with its footpad held at P0 (no slip search); the same returns."""
+def contact_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, frc, rte, X, y):
+    """footpad_force under friction mu = (mu_S, mu_D, the slide's relative tolerance), with mu None the leg's
+    forces with its footpad held at P0 (no slip search), with a footpad_mass.PadModel the footpad where its
+    state y puts it (footpad_mass.pad_force); the same returns."""
     return (_held if mu is None else _slipping)(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl,
-                                                frc, rte, X)
+                                                frc, rte, X, y)
 
 
 @overload(contact_force)
-def _contact_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, frc, rte, X):
-    return _held if isinstance(mu, types.NoneType) else _slipping
+def _contact_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, frc, rte, X, y):
+    if isinstance(mu, types.NoneType):
+        return _held
+    return pad_force.py_func if is_pad(mu) else _slipping
 
 
-def _held(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, frc, rte, X):
+def _held(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, frc, rte, X, y):
     P[0], P[1], P[2] = P0[0], P0[1], P0[2]
     power, alpha, beta, psi = leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
     return 0, power, alpha, beta, psi, 1.0, 0.0, 0.0
 
 
-def _slipping(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, frc, rte, X):
+def _slipping(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, frc, rte, X, y):
     return footpad_force(geo, cells, i, mem, shape, P0, sliding, slip_events(mu), mu[0], mu[1], r, R, v, w, P,
                          defl, frc, rte, X, mu[2])
 
@@ -203,6 +208,8 @@ def footpad_force(geo, cells, i, mem, shape, P0, sliding, hold, mu_s, mu_d, r, R
     P[0], P[1], P[2] = P0[0], P0[1], P0[2]
     fe12, fe3, fe1, fe2, power, alpha, beta, psi = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
     margin = mu_s * max(fe3, 0.0) + FLOOR - fe12
+    if sliding:
+        margin = 1.0                                            # watched only while it sticks
     if (hold and not sliding) or fe12 <= (mu_d if sliding else mu_s) * max(fe3, 0.0) + FLOOR:   # eq. 33-34
         return 0, power, alpha, beta, psi, margin, 0.0, 0.0
     h0 = fe12 - mu_d * max(fe3, 0.0)

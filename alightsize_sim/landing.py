@@ -17,6 +17,7 @@ from . import landing_kernel as lk
 from .rigid_body import quat_matrix
 from .stability import quiescence_momenta
 from .articulated_leg import ArticulatedLeg
+from .footpad_mass import NB, PadModel, n_states
 from .legs import free_footpad, initial_shape, pack
 from .telescoping_leg import TelescopingLeg
 
@@ -28,7 +29,8 @@ class Scene:
     """Mass (kg), principal inertias (kg m^2), legs (principal axes), gravity in terrain axes (m/s^2),
     initial velocity (terrain), attitude quaternion (principal -> terrain) and body rates (principal axes),
     static and dynamic friction, the capsule's up axis and body points (principal axes, from the CG) that
-    must stay clear of the terrain."""
+    must stay clear of the terrain, the mass of each footpad (kg; 0: massless footpads that slide by a root
+    search, the report's model) and the Karnopp velocity band of footpads with mass (m/s; footpad_mass)."""
 
     mass: float
     inertia: np.ndarray
@@ -41,6 +43,8 @@ class Scene:
     mu_dynamic: float = 1.0e6
     up: np.ndarray = field(default_factory=lambda: np.array([0.0, 0.0, 1.0]))
     body_points: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))
+    footpad_mass: float = 0.0
+    footpad_band: float = 1e-3
 
 
 @dataclass(frozen=True)
@@ -77,6 +81,7 @@ class Result:
     forces: np.ndarray                 # (n, legs, cells)
     leg_force: np.ndarray              # (n, legs, 3) ground force on the capsule, principal axes
     footpad: np.ndarray                # (n, legs, 3) terrain axes
+    footpad_velocity: np.ndarray       # (n, legs, 3) terrain axes (zero unless the footpads have mass)
     contact: np.ndarray                # (n, legs)
     status: str
     bottomed: tuple | None             # (time, leg, cell) of the first bottoming
@@ -134,8 +139,14 @@ class _Run:
             for j, cell in enumerate(leg.cells):
                 self.bottoming[i, j] = cell.curve.bottoming
         # The slide's tolerance follows the integration's: 1e-3 rtol, within 1e-13..1e-8 (docs/simulator.md).
-        self.mu = None if holds(scene) else np.array([scene.mu_static, scene.mu_dynamic,
-                                                      min(max(1e-3 * ctl.rtol, 1e-13), 1e-8)])
+        if holds(scene):
+            self.mu = None
+        elif scene.footpad_mass > 0.0:
+            self.mu = PadModel(float(scene.mu_static), float(scene.mu_dynamic), float(scene.footpad_mass),
+                               float(scene.footpad_band))
+        else:
+            self.mu = np.array([scene.mu_static, scene.mu_dynamic, min(max(1e-3 * ctl.rtol, 1e-13), 1e-8)])
+        self.ny = n_states(n) if isinstance(self.mu, PadModel) else NB
         self.mem = np.zeros((n, C, 2))
         self.contact = np.zeros(n, np.int64)
         self.P = np.zeros((n, 3))
@@ -159,9 +170,9 @@ class _Run:
 
     def _grow(self, size: int):
         n, C = self.n, self.C
-        new = dict(H_t=np.empty(size), H_y=np.empty((size, 14)), H_dy=np.empty((size, 14)),   # rows written as
-                   H_d=np.empty((size, n, C)), H_f=np.empty((size, n, C)), H_X=np.empty((size, n, 3)),  # recorded
-                   H_P=np.empty((size, n, 3)), H_c=np.empty((size, n), np.int64))
+        new = dict(H_t=np.empty(size), H_y=np.empty((size, self.ny)), H_dy=np.empty((size, self.ny)),   # rows
+                   H_d=np.empty((size, n, C)), H_f=np.empty((size, n, C)), H_X=np.empty((size, n, 3)),  # as
+                   H_P=np.empty((size, n, 3)), H_c=np.empty((size, n), np.int64))   # recorded
         k = int(self.cnt[lk.K_HIST])
         for name, arr in new.items():
             if k:
@@ -185,7 +196,7 @@ class _Run:
 
     def derivative(self, y: np.ndarray) -> np.ndarray:
         s = self.scene
-        dy = np.zeros(14)
+        dy = np.zeros(self.ny)
         lk.rhs(self.geo, self.cells, s.mass, s.inertia, s.gravity, self.mu, self.mem, self.contact, self.P,
                self.sliding, self.shape, y, dy, *self.work)
         return dy
@@ -214,10 +225,10 @@ def initial_state(scene: Scene, run: _Run) -> np.ndarray:
     R = quat_matrix(scene.q0)
     heights = run.heights(np.zeros(3), R)
     r0 = np.array([0.0, 0.0, -heights.min()])
-    y0 = np.concatenate([r0, scene.v0, scene.q0, scene.omega0, [0.0]])
+    y0 = np.concatenate([r0, scene.v0, scene.q0, scene.omega0, np.zeros(run.ny - 13)])
     for i in np.where(heights - heights.min() <= 1e-12)[0]:
-        lk.switch(run.geo, run.cells, run.mem, run.contact, run.P, run.sliding, run.shape, run.armed, y0, int(i),
-                  run.last, run.work)
+        lk.switch(run.geo, run.cells, run.mu, run.mem, run.contact, run.P, run.sliding, run.shape, run.armed, y0,
+                  int(i), run.last, run.work)
     return y0
 
 
@@ -246,17 +257,26 @@ def simulate(scene: Scene, ctl: Controls) -> Result:
                                                      run.last[i, j])
     cell = run.energy.copy()
     absorbed = float(cell.sum()) - elastic
-    # The massless legs pass on all the work they take from the capsule (integrated with the state): what
-    # the cells did not take went into the footpad-terrain interface (slip, and pads unloading at lift-off).
-    friction = float(Y[-1, 13]) - float(cell.sum())
+    n = run.n
+    pads = Y[:, NB:NB + 4 * n].reshape(k, n, 4) if run.ny > NB else np.zeros((k, n, 4))
+    pad_kinetic = 0.5 * scene.footpad_mass * float(np.sum(pads[-1, :, 2:] ** 2)) if run.ny > NB else 0.0
+    if run.ny > NB:       # footpads with mass: friction work integrated with the state (pads' kinetic energy apart)
+        friction = float(Y[-1, NB + 4 * n])
+    else:
+        # The massless legs pass on all the work they take from the capsule (integrated with the state): what
+        # the cells did not take went into the footpad-terrain interface (slip, and pads unloading at lift-off).
+        friction = float(Y[-1, 13]) - float(cell.sum())
     denom = ke0 + max(released, 0.0)
-    closure = abs(ke0 + released - (absorbed + elastic + friction + ke1)) / denom if denom > 0 else 0.0
+    closure = abs(ke0 + released - (absorbed + elastic + friction + pad_kinetic + ke1)) / denom if denom > 0 else 0.0
     en = {"initial_J": ke0, "potential_change_J": released, "absorbed_J": absorbed, "elastic_J": elastic,
-          "friction_J": friction, "kinetic_end_J": ke1, "closure_rel": float(closure), "leg_work_J": float(Y[-1, 13])}
+          "friction_J": friction, "kinetic_end_J": ke1, "closure_rel": float(closure), "leg_work_J": float(Y[-1, 13]),
+          "footpad_kinetic_J": pad_kinetic}
     rs = run.run_state
     bottomed = (float(rs[lk.S_BOT_T]), int(rs[lk.S_BOT_LEG]), int(rs[lk.S_BOT_CELL])) if rs[lk.S_BOT_T] >= 0 else None
-    res = Result(run.H_t[:k].copy(), Y, run.H_dy[:k].copy(), run.H_d[:k].copy(), run.H_f[:k].copy(),
-                 run.H_X[:k].copy(), run.H_P[:k].copy(), run.H_c[:k].copy(), STATUS[status], bottomed,
+    velocity = np.zeros((k, n, 3))
+    velocity[:, :, :2] = pads[:, :, 2:]
+    res = Result(run.H_t[:k].copy(), Y[:, :NB], run.H_dy[:k, :NB].copy(), run.H_d[:k].copy(), run.H_f[:k].copy(),
+                 run.H_X[:k].copy(), run.H_P[:k].copy(), velocity, run.H_c[:k].copy(), STATUS[status], bottomed,
                  int(rs[lk.S_STRUCK]) if status == lk.MEMBER else None, cell,
                  run.mem.copy(), int(run.cnt[lk.K_STEPS]), int(run.cnt[lk.K_REJECTED]),
                  int(run.cnt[lk.K_RHS]), int(run.cnt[lk.K_EVENTS]), int(run.cnt[lk.K_TRIALS]), wall, en,

@@ -18,7 +18,8 @@ import numpy as np
 from numba import njit
 
 from . import crush_cell
-from .footpad_slip import FLOOR, contact_force, slip_events
+from .footpad_mass import FLOOR, pad_event, pad_rates, pad_settle, pad_switch
+from .footpad_slip import contact_force, slip_events
 from .rigid_body import free_flight, quat_matrix, quat_rate
 from .stability import hanging_margin, quiescence_momenta, quiescence_update, stable_by_energy, tipping_margins
 from .legs import free_footpad, leg_force, lift_shape, main_set, member_strike
@@ -33,7 +34,6 @@ B5 = np.array([35 / 384, 0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84, 0])
 B4 = np.array([5179 / 57600, 0, 7571 / 16695, 393 / 640, -92097 / 339200, 187 / 2100, 1 / 40])
 D = np.array([-12715105075 / 11282082432, 0, 87487479700 / 32700410799, -10690763975 / 1880347072,
               701980252875 / 199316789632, -1453857185 / 822651844, 69997945 / 29380423])   # dense output (CONTD5)
-NY = 14
 
 # Statuses returned to the caller.
 END, BUFFER, BOTTOMED, TIPPED, BODY, QUIET, FAILED, STABLE, MEMBER = 0, 2, 3, 4, 5, 6, 7, 8, 9
@@ -125,12 +125,12 @@ def _legs(geo, cells, mu, mem, contact, P, sliding, shape, y, Pt, slt, dt, ft, X
     """Footpad, slip state, forces and mt = (static margin, reach deficit, alpha, beta, psi, footpad path error)
     of every leg at state y (mu = mu_S, mu_D, the slide's relative tolerance, or None: footpads held); returns
     the cells' power."""
-    r, v, w = y[0:3], y[3:6], y[10:13]
+    r, v, w = y[0:3], (y[3], y[4], y[5]), y[10:13]
     power = 0.0
     for i in range(len(contact)):
         if contact[i]:
             sl, pw, mt[i, 2], mt[i, 3], mt[i, 4], mt[i, 0], mt[i, 1], mt[i, 5] = contact_force(
-                geo, cells, i, mem[i], shape[i], P[i], sliding[i], mu, r, R, v, w, Pt[i], dt[i], ft[i], rt[i], Xt[i])
+                geo, cells, i, mem[i], shape[i], P[i], sliding[i], mu, r, R, v, w, Pt[i], dt[i], ft[i], rt[i], Xt[i], y)
             slt[i] = sl
             power += pw
         else:
@@ -140,9 +140,11 @@ def _legs(geo, cells, mu, mem, contact, P, sliding, shape, y, Pt, slt, dt, ft, X
 
 @njit(cache=True)
 def rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape, y, dy, Pt, slt, dt, ft, Xt, mt, rt):
-    """dy/dt: eq. 3-5 in terrain axes, Euler's equations 6-8 in principal axes, quaternion rate, leg work."""
+    """dy/dt: eq. 3-5 in terrain axes, Euler's equations 6-8 in principal axes, quaternion rate, leg work (and
+    the footpads' motion and friction work when they have mass: footpad_mass)."""
     R = quat_matrix(y[6:10])
     power = _legs(geo, cells, mu, mem, contact, P, sliding, shape, y, Pt, slt, dt, ft, Xt, mt, rt, R)
+    power += pad_rates(mu, contact, sliding, Xt, R, y, dy)
     F0 = F1 = F2 = M0 = M1 = M2 = 0.0
     for i in range(len(contact)):
         if contact[i]:
@@ -183,7 +185,7 @@ def _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt,
             g[i] = free_footpad(geo, cells, i, mem[i], shape[i], y[0:3], R)[2]
         if not (raw or armed[i] > 0 or (contact[i] and mt[i, 1] > 0.0)):
             g[i] += BAND
-        g[n + i] = mt[i, 0] if located and contact[i] and not sliding[i] else 1.0
+        g[n + i] = mt[i, 0] if located and contact[i] else 1.0
         for j in range(C):
             c = C * i + j
             g[2 * n + c] = rt[i, j] if contact[i] and cev[i, j, 0] else 1.0
@@ -211,7 +213,8 @@ def _fly(y, h, inertia, gravity, out):
         out[c], out[3 + c], out[10 + c] = r[c], v[c], w[c]
     for c in range(4):
         out[6 + c] = q[c]
-    out[13] = y[13]
+    for c in range(13, len(y)):
+        out[c] = y[c]
 
 
 @njit(cache=True)
@@ -221,19 +224,19 @@ def _stage(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, sha
     on the ground, axisymmetric body) the step is the closed form of eq. 62-88, exact."""
     if flight:
         _fly(y, h, inertia, gravity, y1)
-        for c in range(NY):
+        for c in range(len(y)):
             err[c] = 0.0
         rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape, y1, K[6], *work)
         return
     yi = y1                                                     # stage state, overwritten below
     for s in range(1, 7):
-        for c in range(NY):
+        for c in range(len(y)):
             acc = y[c]
             for j in range(s):
                 acc += h * A[s, j] * K[j, c]
             yi[c] = acc
         rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape, yi, K[s], *work)
-    for c in range(NY):
+    for c in range(len(y)):
         acc, e = y[c], 0.0
         for j in range(7):
             acc += h * B5[j] * K[j, c]
@@ -250,6 +253,7 @@ def _commit(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, ener
     change)."""
     Pt, slt, dt, ft, Xt, mt, rt = work
     cd, cf, cn, ck, cc, cy = cells
+    R = quat_matrix(y[6:10])
     _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt, mt, g, True)
     C = mem.shape[1]
     started = False
@@ -264,6 +268,8 @@ def _commit(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, ener
         sliding[i] = slt[i]
         if not sliding[i] and mt[i, 0] < 0.0:                     # eq. 33: a held footpad past mu_S slides
             sliding[i], started = 1, True
+        elif pad_settle(mu, y, i, P, sliding, Xt, R):
+            started = True
         for j in range(1 + geo[5][i]):
             m = cn[i, j]
             d, f = cd[i, j, :m], cf[i, j, :m]
@@ -285,17 +291,19 @@ def _commit(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, ener
 
 
 @njit(cache=True)
-def switch(geo, cells, mem, contact, P, sliding, shape, armed, y, which, last, work):
+def switch(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, which, last, work):
     """Touchdown (the footpad holds where it landed) or lift-off (the shape is stored for recontact: eq. 13,
     FORCE's ZETA)."""
     Pt, slt, dt, ft, Xt, mt, rt = work
     R = quat_matrix(y[6:10])
     armed[which] = 0
     C = mem.shape[1]
+    v = (y[3], y[4], y[5])
     if contact[which]:
-        _, alpha, beta, psi = leg_force(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R, y[3:6],
+        _, alpha, beta, psi = leg_force(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R, v,
                                         y[10:13], dt[which], ft[which], rt[which], Xt[which])
         contact[which] = 0
+        pad_switch(mu, y, which, P, sliding, False)
         shape[which, 0], shape[which, 1], shape[which, 2] = lift_shape(geo, cells, which, mem[which], alpha, beta, psi,
                                                                        dt[which, 0], y[0:3], R)
         last[which, 2 * C] = 0.0
@@ -303,7 +311,8 @@ def switch(geo, cells, mem, contact, P, sliding, shape, armed, y, which, last, w
         pad = free_footpad(geo, cells, which, mem[which], shape[which], y[0:3], R)
         P[which, 0], P[which, 1], P[which, 2] = pad[0], pad[1], 0.0
         contact[which], sliding[which] = 1, 1                   # (re)contact slides on mu_D (eq. 33)
-        leg_force(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R, y[3:6], y[10:13], dt[which],
+        pad_switch(mu, y, which, P, sliding, True)
+        leg_force(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R, v, y[10:13], dt[which],
                   ft[which], rt[which], Xt[which])
         for j in range(C):
             last[which, j], last[which, C + j] = dt[which, j], 0.0
@@ -403,9 +412,9 @@ def _error_norm(y, y1, err, ctl, geo, mt, Xt, weight, h):
     error: there it no longer falls as h^2 (a slide that jumps, the friction cone folding near zero normal load;
     a push direction that turns by a finite angle within a tiny slide), so shorter steps would not reduce it."""
     e = 0.0
-    for c in range(NY):
+    for c in range(len(y)):
         e += (err[c] / (ctl[C_ATOL] + ctl[C_RTOL] * max(abs(y[c]), abs(y1[c])))) ** 2
-    e = np.sqrt(e / NY)
+    e = np.sqrt(e / len(y))
     if h <= PATH_FLOOR * ctl[C_EVENTTOL]:
         return e
     for i in range(mt.shape[0]):
@@ -426,7 +435,7 @@ def _dense(y0, y1, K, h, theta, out):
     guide): the cubic Hermite of (y0, f0, y1, f1) plus theta^2 (1 - theta)^2 h sum(d_i k_i) (Hairer, Norsett
     and Wanner 1993, Sec. II.6, CONTD5)."""
     s = 1.0 - theta
-    for c in range(NY):
+    for c in range(len(y0)):
         d = y1[c] - y0[c]
         r3 = h * K[0, c] - d
         r4 = d - h * K[6, c] - r3
@@ -497,13 +506,14 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
     """Advance the landing from (t, y) until t_final or a status; y, t and every memory array are updated in
     place. Returns (status, t)."""
     n, n_cell = mem.shape[0], mem.shape[1]
-    K = np.zeros((7, NY))
-    y1, err = np.empty(NY), np.empty(NY)
+    ny = len(y)
+    K = np.zeros((7, ny))
+    y1, err = np.empty(ny), np.empty(ny)
     n_g = n_events(n, n_cell)
     g_prev, g1, g_lo = np.empty(n_g), np.empty(n_g), np.empty(n_g)
     work, work_lo = new_work(n, n_cell), new_work(n, n_cell)
     Pt, slt, dt, ft, Xt, mt, rt = work
-    y_lo, yt = np.empty(NY), np.empty(NY)
+    y_lo, yt = np.empty(ny), np.empty(ny)
     gm, ga, gb = np.empty(n_g), np.empty(n_g), np.empty(n_g)
     args = (geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape)
     rhs(*args, y, K[0], *work)
@@ -618,7 +628,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
         if forced >= 2 * n:
             cell_event(cells, cev, forced, n)
         elif forced >= n:
-            sliding[forced - n], changed = 1, True
+            changed = pad_event(mu, y, forced - n, P, sliding, Xt, quat_matrix(y[6:10]))
         k = cnt[K_HIST]                                # record as committed (a switching leg: before it)
         if k > 0 and t <= H_t[k - 1]:
             k -= 1                                     # an event at the start of a step replaces its record
@@ -636,7 +646,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
             _copy1(K[0], K[6])                        # first same as last: memory updates keep the force
         else:
             if 0 <= forced < n:
-                switch(geo, cells, mem, contact, P, sliding, shape, armed, y, forced, last, work)
+                switch(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, forced, last, work)
             rhs(*args, y, K[0], *work)
             cnt[K_RHS] += 1
             # A slide that jumps here (it starts with mu_S > mu_D, or a touchdown) starts the next step where it
@@ -654,7 +664,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
         # there would let it touch and leave again at the same instant.
         for i in range(n):
             if contact[i] and mt[i, 1] > 0.0 and g_prev[i] <= 0.0:
-                switch(geo, cells, mem, contact, P, sliding, shape, armed, y, i, last, work)
+                switch(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, i, last, work)
                 armed[i] = LOCKED
                 rhs(*args, y, K[0], *work)
                 cnt[K_RHS] += 1

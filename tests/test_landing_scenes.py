@@ -324,9 +324,11 @@ def test_a_scene_that_cannot_slip_holds_its_footpads_without_a_slip_search(name,
 def test_compiled_code_for_one_leg_kind_takes_that_kind_alone(name, kind):
     """A set of legs of one kind packs the other kind's arrays as None, and the compiled dispatch (numba
     overload on geo's type) resolves to that kind's functions: the other kind is never compiled. A held
-    scene (mu None) resolves to the held contact, a slipping one to the slip search."""
+    scene (mu None) resolves to the held contact, a slipping one to the slip search, footpads with mass to
+    their own model."""
     import numba
-    from alightsize_sim import articulated_leg, footpad_slip, legs, telescoping_leg
+    from alightsize_sim import articulated_leg, footpad_mass, footpad_slip, legs, telescoping_leg
+    from alightsize_sim.footpad_mass import PadModel
     geo, _ = legs.pack(read_scene(f"{SCENES}/{name}.toml").scene.legs)
     assert (geo[4] is None) == (kind == "articulated_leg") and (geo[8] is None) == (kind == "telescoping_leg")
     module = {"telescoping_leg": telescoping_leg, "articulated_leg": articulated_leg}[kind]
@@ -334,7 +336,8 @@ def test_compiled_code_for_one_leg_kind_takes_that_kind_alone(name, kind):
     assert legs._leg_force(t, *[None] * 13) is module.leg_force.py_func
     assert legs._free_footpad(t, *[None] * 6) is module.free_footpad.py_func
     assert legs._lift_shape(t, *[None] * 9) is module.lift_shape.py_func
-    none, arr = numba.types.none, numba.typeof(np.zeros(3))
+    none, arr, pad = numba.types.none, numba.typeof(np.zeros(3)), numba.typeof(PadModel(0.5, 0.5, 1.0, 1e-3))
     args = [None] * 7
-    assert footpad_slip._contact_force(*args, none, *[None] * 9) is footpad_slip._held
-    assert footpad_slip._contact_force(*args, arr, *[None] * 9) is footpad_slip._slipping
+    assert footpad_slip._contact_force(*args, none, *[None] * 10) is footpad_slip._held
+    assert footpad_slip._contact_force(*args, arr, *[None] * 10) is footpad_slip._slipping
+    assert footpad_slip._contact_force(*args, pad, *[None] * 10) is footpad_mass.pad_force.py_func

@@ -112,7 +112,7 @@ def scipy_landing(cfg: SceneConfig, ctl: Controls, method: str) -> tuple[dict, i
     peak, t = 0.0, 0.0
 
     def f(_t, yy):
-        dy = np.zeros(14)
+        dy = np.zeros(run.ny)
         lk.rhs(run.geo, run.cells, s.mass, s.inertia, s.gravity, run.mu, run.mem, run.contact, run.P, run.sliding,
                run.shape, yy, dy, *work)
         return dy
@@ -137,8 +137,8 @@ def scipy_landing(cfg: SceneConfig, ctl: Controls, method: str) -> tuple[dict, i
         if which >= 2 * n:
             lk.cell_event(run.cells, run.cev, which, n)
         elif 0 <= which < n:
-            lk.switch(run.geo, run.cells, run.mem, run.contact, run.P, run.sliding, run.shape, run.armed, yy, which,
-                      run.last, work)
+            lk.switch(run.geo, run.cells, run.mu, run.mem, run.contact, run.P, run.sliding, run.shape, run.armed, yy,
+                      which, run.last, work)
         if which >= 0 or started:
             dy = f(tt, yy)
         _events(yy, g_prev)

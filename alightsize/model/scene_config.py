@@ -110,8 +110,9 @@ def _legs(node: Node, cells: dict[str, Node]) -> list[dict]:
     if kind == "articulated":
         return _articulated_legs(node, cells)
     node.allow(("kind", "count", "radius", "height", "first_azimuth", "length", "pad_lever", "pad_angles", "axial",
-                "pads", "cell_factors", "small_angle", "note"))
+                "pads", "cell_factors", "small_angle", "footpad_mass", "note"))
     n, radius, height, az0 = _pattern(node)
+    pad_mass = _footpad_mass(node)
     rho = node.quantity("length", "length")
     lever = node.quantity("pad_lever", "length", 0.0, positive=False) if node.has("pad_lever") else 0.0
     angles_raw = node.raw("pad_angles", [])
@@ -130,8 +131,17 @@ def _legs(node: Node, cells: dict[str, Node]) -> list[dict]:
     for i in range(n):
         az = az0 + 2 * np.pi * i / n
         legs.append(dict(kind=kind, attach=np.array([radius * np.cos(az), radius * np.sin(az), height]), rho=rho,
-                         lever=lever, angles=angles, axial=axial, pads=pads, small=small, factors=factors[i]))
+                         lever=lever, angles=angles, axial=axial, pads=pads, small=small, factors=factors[i],
+                         footpad_mass=pad_mass))
     return legs
+
+
+def _footpad_mass(node: Node) -> float:
+    """Each footpad's mass (0, the default: massless footpads, the report's model; alightsize_sim.footpad_mass)."""
+    mass = node.quantity("footpad_mass", "mass", positive=False) if node.has("footpad_mass") else 0.0
+    if not mass >= 0.0:
+        raise node.error("footpad_mass", "a mass >= 0 (0: massless footpads)", f"{mass:.4g} kg")
+    return mass
 
 
 def _pattern(node: Node) -> tuple[int, float, float, float]:
@@ -146,8 +156,9 @@ def _articulated_legs(node: Node, cells: dict[str, Node]) -> list[dict]:
     """Articulated legs (Sec. V.F): the leg origin (lower inboard parallelogram pivot) at radius and height, S1
     outward along the azimuth, S3 along the roll axis; the geometry of Fig. 22-25 and the initial psi."""
     node.allow(("kind", "count", "radius", "height", "first_azimuth", "geometry", "length_scale", "psi_initial",
-                "upper", "lower", "cell_factors", "note"))
+                "upper", "lower", "cell_factors", "footpad_mass", "note"))
     n, radius, height, az0 = _pattern(node)
+    pad_mass = _footpad_mass(node)
     geometry = read_geometry(node.table("geometry"))
     scale = node.number("length_scale", 1.0)
     geometry = geometry._replace(**{k: scale * getattr(geometry, k) for k in LENGTHS})   # test-model scaling (Table 27)
@@ -162,7 +173,8 @@ def _articulated_legs(node: Node, cells: dict[str, Node]) -> list[dict]:
     for i in range(n):
         az = az0 + 2 * np.pi * i / n
         legs.append(dict(kind="articulated", attach=np.array([radius * np.cos(az), radius * np.sin(az), height]),
-                         azimuth=az, geometry=geometry, psi0=psi0, upper=upper, lower=lower, factors=factors[i]))
+                         azimuth=az, geometry=geometry, psi0=psi0, upper=upper, lower=lower, factors=factors[i],
+                         footpad_mass=pad_mass))
     return legs
 
 
@@ -304,8 +316,10 @@ def read_scene(path: str | Path, overrides: dict[str, object] | None = None) -> 
     if ter:
         ter.allow(("slope", "mu_static", "mu_dynamic", "note"))
         slope = ter.quantity("slope", "angle", 0.0, positive=False) if ter.has("slope") else 0.0
-        mu_s = ter.number("mu_static", 1.5e6)
-        mu_d = ter.number("mu_dynamic", 1.0e6)
+        mu_s = ter.number("mu_static", 1.5e6, positive=False)
+        mu_d = ter.number("mu_dynamic", 1.0e6, positive=False)
+        if mu_d < 0:
+            raise ter.error("mu_dynamic", "a friction coefficient >= 0 (0: frictionless)", f"{mu_d}")
         ter.string("note", "")
         ter.finish()
         if mu_d > mu_s:
@@ -357,7 +371,7 @@ def read_scene(path: str | Path, overrides: dict[str, object] | None = None) -> 
     body = np.zeros((0, 3)) if bottom is None else (to_geo.T @ (np.array([0.0, 0.0, -bottom]) - cg))[None, :]
     scene = Scene(mass, moments, tuple(legs), lepk @ np.array([0.0, 0.0, -g]), lepk @ vel, q0, to_geo.T @ rates,
                   mu_s if mu_s is not None else 1.5e6, mu_d if mu_d is not None else 1.0e6, to_geo.T @ np.array([0.0, 0, 1]),
-                  body)
+                  body, leg_specs[0]["footpad_mass"])
     return SceneConfig(path, name, title, scene, c, to_geo, lepk, interval, srs_damping, tuple(names))
 
 
