@@ -147,7 +147,7 @@ def _synthesize(args) -> int:
 
 def _bench(args) -> int:
     from alightsize.landings.bench import run_bench, write_bench
-    data = run_bench(quick=args.quick, progress=lambda msg: print(msg, flush=True))
+    data = run_bench(quick=args.quick, progress=lambda msg: print(msg, flush=True), only=tuple(args.scene or ()))
     files = write_bench(data, Path(args.out))
     print("wrote " + ", ".join(str(f) for f in files))
     return 0
@@ -236,6 +236,8 @@ def parser() -> argparse.ArgumentParser:
     b = sub.add_parser("bench", help="landing simulator speed against error, with the solve_ivp-style baseline")
     b.add_argument("--out", required=True, help="output folder")
     b.add_argument("--quick", action="store_true", help="fewer scenes and settings")
+    b.add_argument("--scene", action="append", metavar="NAME",
+                   help="bench only this scene of the set (repeatable; e.g. flat_drop, telescoping_config2)")
     b.set_defaults(run=_bench)
     s = sub.add_parser("scale", help="test-model scaling factors (Table 27)")
     s.add_argument("--length", type=float, required=True, help="length scale, full / model")

@@ -15,7 +15,10 @@ relative to the capsule (the leg's rate is computed with v - u); the capsule los
 (fe = R X, terrain axes), the footpad gains -fe . u and friction takes -G . u. The footpad's weight is not
 modelled: its mass only gives the slide inertia (the capsule's mass includes it).
 
-State: y[NB + 4i : NB + 4i + 4] = footpad i's (x, y, u_x, u_y) in terrain axes, y[NB + 4n] the friction work.
+State: y[NB + 4i : NB + 4i + 4] = footpad i's (x, y, u_x, u_y) in terrain axes, y[NB + 4n] the friction work,
+y[NB + 4n + 1] the work the legs take beyond their cells' (an articulated leg's return spring and seat blend;
+zero for a telescoping leg), y[NB + 4n + 2 + C i + j] the work of cell j's damper (the step loop adds the exact
+rate-free work at each accepted step), so that the energy audit checks every term it reports.
 """
 
 from __future__ import annotations
@@ -26,6 +29,7 @@ import numpy as np
 from numba import njit, types
 from numba.extending import overload
 
+from . import crush_cell
 from .legs import leg_force
 from .vec3 import mv
 
@@ -42,9 +46,20 @@ def is_pad(mu) -> bool:
     return isinstance(mu, types.NamedUniTuple) and mu.instance_class is PadModel
 
 
-def n_states(n: int) -> int:
-    """Length of the state vector with n footpads that have mass."""
-    return NB + 4 * n + 1
+def n_states(n: int, C: int) -> int:
+    """Length of the state vector with n footpads that have mass on legs of up to C cells."""
+    return NB + 4 * n + 2 + n * C
+
+
+def integrates_dampers(mu):
+    """Whether the cells' damper work is integrated as state (footpads with mass), not summed by the trapezoid
+    rule at accepted steps."""
+    return isinstance(mu, PadModel)
+
+
+@overload(integrates_dampers)
+def _integrates_dampers(mu):
+    return (lambda mu: True) if is_pad(mu) else (lambda mu: False)
 
 
 @njit(cache=True)
@@ -84,22 +99,37 @@ def _friction(mu, mode, fe0, fe1, fe2, u0, u1):
     return -limit * p0 / p, -limit * p1 / p
 
 
-def pad_rates(mu, contact, sliding, Xt, R, y, dy):
-    """Footpad state derivatives into dy; returns the power the footpads take from the capsule beyond the cells'
-    (-fe . u summed). A no-op returning 0 without footpad mass."""
+def pad_rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy):
+    """Footpad state derivatives into dy, given the legs' state and the power they take from the capsule at
+    held footpads; returns the power the footpads take beyond that (-fe . u summed). A no-op returning 0 without
+    footpad mass."""
+    if isinstance(mu, PadModel):
+        return _rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy)
     return 0.0
 
 
 @overload(pad_rates)
-def _pad_rates(mu, contact, sliding, Xt, R, y, dy):
-    return _rates if is_pad(mu) else (lambda mu, contact, sliding, Xt, R, y, dy: 0.0)
+def _pad_rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy):
+    if is_pad(mu):
+        return _rates
+    return lambda mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy: 0.0
 
 
-def _rates(mu, contact, sliding, Xt, R, y, dy):
-    n = len(contact)
-    extra, lost = 0.0, 0.0
+def _rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy):
+    n, C = len(contact), ft.shape[1]
+    cd, cf, cn, ck, cc, cy = cells
+    extra, lost, other = 0.0, 0.0, power
     for i in range(n):
         o = NB + 4 * i
+        for j in range(C):
+            k = NB + 4 * n + 2 + C * i + j
+            dy[k] = 0.0
+            if contact[i] and cn[i, j] > 0:
+                m = cn[i, j]
+                static = crush_cell.force(cd[i, j, :m], cf[i, j, :m], ck[i, j], 0.0, cy[i, j], mem[i, j, 0],
+                                          mem[i, j, 1], dt[i, j], 0.0)
+                dy[k] = (ft[i, j] - static) * rt[i, j]
+                other -= ft[i, j] * rt[i, j]
         if contact[i] and sliding[i] != STICK:
             fe = mv(R, Xt[i, 0], Xt[i, 1], Xt[i, 2])
             u0, u1 = y[o + 2], y[o + 3]
@@ -110,13 +140,15 @@ def _rates(mu, contact, sliding, Xt, R, y, dy):
             lost -= g0 * u0 + g1 * u1
         else:
             dy[o] = dy[o + 1] = dy[o + 2] = dy[o + 3] = 0.0
-    dy[NB + 4 * n] = lost
+    dy[NB + 4 * n], dy[NB + 4 * n + 1] = lost, other
     return extra
 
 
 def pad_switch(mu, y, i, P, sliding, down):
     """A leg touching down (down) or lifting off: its footpad starts at rest where it touched, in the band; one
     lifting off drops its velocity (its kinetic energy counts as friction). A no-op without footpad mass."""
+    if isinstance(mu, PadModel):
+        _switch(mu, y, i, P, sliding, down)
 
 
 @overload(pad_switch)
@@ -141,15 +173,19 @@ def _stop(mu, y, i, n):
 
 
 def pad_event(mu, y, i, P, sliding, Xt, R):
-    """A located slip event of leg i (returns True: the forces change); without footpad mass a sticking footpad
+    """A slip event of leg i (returns True: the forces change); without footpad mass a sticking footpad
     starts to slide."""
-    sliding[i] = 1
-    return True
+    return (_event if isinstance(mu, PadModel) else _start)(mu, y, i, P, sliding, Xt, R)
 
 
 @overload(pad_event)
 def _pad_event(mu, y, i, P, sliding, Xt, R):
-    return _event if is_pad(mu) else pad_event
+    return _event if is_pad(mu) else _start
+
+
+def _start(mu, y, i, P, sliding, Xt, R):
+    sliding[i] = 1
+    return True
 
 
 def _event(mu, y, i, P, sliding, Xt, R):
@@ -169,7 +205,7 @@ def pad_settle(mu, y, i, P, sliding, Xt, R):
     """After an accepted step: a banded footpad whose push is below the dynamic limit sticks where it is
     (returns whether it did): a footpad touching down slides on mu_D like the massless one (eq. 33). A no-op
     without footpad mass."""
-    return False
+    return isinstance(mu, PadModel) and _settle(mu, y, i, P, sliding, Xt, R)
 
 
 @overload(pad_settle)

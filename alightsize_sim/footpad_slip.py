@@ -207,20 +207,17 @@ def footpad_force(geo, cells, i, mem, shape, P0, sliding, hold, mu_s, mu_d, r, R
     of a uniformly turning path), the step loop's error control for the footpad position."""
     P[0], P[1], P[2] = P0[0], P0[1], P0[2]
     fe12, fe3, fe1, fe2, power, alpha, beta, psi = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
-    margin = mu_s * max(fe3, 0.0) + FLOOR - fe12
-    if sliding:
-        margin = 1.0                                            # watched only while it sticks
+    margin = mu_s * max(fe3, 0.0) + FLOOR - fe12 if not sliding else 1.0   # watched only while it sticks
     if (hold and not sliding) or fe12 <= (mu_d if sliding else mu_s) * max(fe3, 0.0) + FLOOR:   # eq. 33-34
         return 0, power, alpha, beta, psi, margin, 0.0, 0.0
     h0 = fe12 - mu_d * max(fe3, 0.0)
     if h0 <= 0.0:                                               # static limit exceeded, dynamic one not
-        return 1, power, alpha, beta, psi, margin, 0.0, 0.0
-    return _slide(geo, cells, i, mem, shape, P0, mu_d, r, R, v, w, P, defl, frc, rte, X, tol, fe1, fe2, fe12, h0,
-                  margin)
+        return 1, power, alpha, beta, psi, 1.0, 0.0, 0.0
+    return _slide(geo, cells, i, mem, shape, P0, mu_d, r, R, v, w, P, defl, frc, rte, X, tol, fe1, fe2, fe12, h0)
 
 
 @njit(cache=True)
-def _slide(geo, cells, i, mem, shape, P0, mu_d, r, R, v, w, P, defl, frc, rte, X, tol, fe1, fe2, fe12, h0, margin):
+def _slide(geo, cells, i, mem, shape, P0, mu_d, r, R, v, w, P, defl, frc, rte, X, tol, fe1, fe2, fe12, h0):
     """The slide: the footpad moved from P0 along the leg's push until FE12 = mu_D FE3 (see footpad_force)."""
     d0, d1 = -fe1 / fe12, -fe2 / fe12                           # the leg's push on the footpad
     # Expand until the excess changes sign or the footpad leaves the leg's reach: steps growing fourfold, or
@@ -260,4 +257,4 @@ def _slide(geo, cells, i, mem, shape, P0, mu_d, r, R, v, w, P, defl, frc, rte, X
     fe12, fe3, fe1, fe2, power, alpha, beta, psi = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
     deficit = 0.0 if ok_hi else max(fe12 - mu_d * max(fe3, 0.0), 0.0) / cells[3][i, 0]
     path = 0.5 * s_end * np.hypot(d0 + fe1 / fe12, d1 + fe2 / fe12) if fe12 > FLOOR else 0.0
-    return 1, power, alpha, beta, psi, margin, deficit, path
+    return 1, power, alpha, beta, psi, 1.0, deficit, path

@@ -146,7 +146,7 @@ class _Run:
                                float(scene.footpad_band))
         else:
             self.mu = np.array([scene.mu_static, scene.mu_dynamic, min(max(1e-3 * ctl.rtol, 1e-13), 1e-8)])
-        self.ny = n_states(n) if isinstance(self.mu, PadModel) else NB
+        self.ny = n_states(n, C) if isinstance(self.mu, PadModel) else NB
         self.mem = np.zeros((n, C, 2))
         self.contact = np.zeros(n, np.int64)
         self.P = np.zeros((n, 3))
@@ -256,21 +256,27 @@ def simulate(scene: Scene, ctl: Controls) -> Result:
                 elastic += crush_cell.elastic_energy(run.cells[3][i, j], run.mem[i, j, 0], run.mem[i, j, 1],
                                                      run.last[i, j])
     cell = run.energy.copy()
-    absorbed = float(cell.sum()) - elastic
     n = run.n
-    pads = Y[:, NB:NB + 4 * n].reshape(k, n, 4) if run.ny > NB else np.zeros((k, n, 4))
-    pad_kinetic = 0.5 * scene.footpad_mass * float(np.sum(pads[-1, :, 2:] ** 2)) if run.ny > NB else 0.0
-    if run.ny > NB:       # footpads with mass: friction work integrated with the state (pads' kinetic energy apart)
-        friction = float(Y[-1, NB + 4 * n])
+    pads = np.zeros((k, n, 4))
+    pad_kinetic = other = 0.0
+    if run.ny > NB:
+        # Footpads with mass: the dampers' work, the footpads' friction work and the legs' work beyond their
+        # cells (return springs, seat) are integrated with the state; the footpads keep their kinetic energy.
+        cell += Y[-1, NB + 4 * n + 2:].reshape(n, run.C)
+        pads = Y[:, NB:NB + 4 * n].reshape(k, n, 4)
+        pad_kinetic = 0.5 * scene.footpad_mass * float(np.sum(pads[-1, :, 2:] ** 2))
+        friction, other = float(Y[-1, NB + 4 * n]), float(Y[-1, NB + 4 * n + 1])
     else:
         # The massless legs pass on all the work they take from the capsule (integrated with the state): what
         # the cells did not take went into the footpad-terrain interface (slip, and pads unloading at lift-off).
         friction = float(Y[-1, 13]) - float(cell.sum())
+    absorbed = float(cell.sum()) - elastic
     denom = ke0 + max(released, 0.0)
-    closure = abs(ke0 + released - (absorbed + elastic + friction + pad_kinetic + ke1)) / denom if denom > 0 else 0.0
+    out = absorbed + elastic + friction + pad_kinetic + other + ke1
+    closure = abs(ke0 + released - out) / denom if denom > 0 else 0.0
     en = {"initial_J": ke0, "potential_change_J": released, "absorbed_J": absorbed, "elastic_J": elastic,
           "friction_J": friction, "kinetic_end_J": ke1, "closure_rel": float(closure), "leg_work_J": float(Y[-1, 13]),
-          "footpad_kinetic_J": pad_kinetic}
+          "footpad_kinetic_J": pad_kinetic, "leg_other_J": other}
     rs = run.run_state
     bottomed = (float(rs[lk.S_BOT_T]), int(rs[lk.S_BOT_LEG]), int(rs[lk.S_BOT_CELL])) if rs[lk.S_BOT_T] >= 0 else None
     velocity = np.zeros((k, n, 3))

@@ -18,7 +18,7 @@ import numpy as np
 from numba import njit
 
 from . import crush_cell
-from .footpad_mass import FLOOR, pad_event, pad_rates, pad_settle, pad_switch
+from .footpad_mass import FLOOR, integrates_dampers, pad_event, pad_rates, pad_settle, pad_switch
 from .footpad_slip import contact_force, slip_events
 from .rigid_body import free_flight, quat_matrix, quat_rate
 from .stability import hanging_margin, quiescence_momenta, quiescence_update, stable_by_energy, tipping_margins
@@ -144,7 +144,7 @@ def rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape,
     the footpads' motion and friction work when they have mass: footpad_mass)."""
     R = quat_matrix(y[6:10])
     power = _legs(geo, cells, mu, mem, contact, P, sliding, shape, y, Pt, slt, dt, ft, Xt, mt, rt, R)
-    power += pad_rates(mu, contact, sliding, Xt, R, y, dy)
+    power += pad_rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy)
     F0 = F1 = F2 = M0 = M1 = M2 = 0.0
     for i in range(len(contact)):
         if contact[i]:
@@ -266,8 +266,8 @@ def _commit(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, ener
         for c in range(3):
             P[i, c], shape[i, c] = Pt[i, c], mt[i, 2 + c]
         sliding[i] = slt[i]
-        if not sliding[i] and mt[i, 0] < 0.0:                     # eq. 33: a held footpad past mu_S slides
-            sliding[i], started = 1, True
+        if mt[i, 0] < 0.0:          # eq. 33: a held footpad past mu_S slides (with mass: a band crossing missed)
+            started = pad_event(mu, y, i, P, sliding, Xt, R) or started
         elif pad_settle(mu, y, i, P, sliding, Xt, R):
             started = True
         for j in range(1 + geo[5][i]):
@@ -278,7 +278,8 @@ def _commit(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, ener
             if known:
                 energy[i, j] += crush_cell.static_work(d, f, ck[i, j], cy[i, j], mem[i, j, 0], mem[i, j, 1],
                                                        last[i, j], delta)
-                energy[i, j] += 0.5 * (damper + last[i, C + j]) * (delta - last[i, j])
+                if not integrates_dampers(mu):
+                    energy[i, j] += 0.5 * (damper + last[i, C + j]) * (delta - last[i, j])
             if delta > mem[i, j, 0]:                  # a new largest stroke: watch its turn while it rises
                 cev[i, j, 0] = delta > ARM and rt[i, j] > 0.0
             elif delta < mem[i, j, 0]:

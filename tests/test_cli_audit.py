@@ -128,3 +128,11 @@ def test_scale_json(tmp_path):
     assert doc["schema"] == "alightsize.scale/1" and doc["factors"]["time"] == pytest.approx(2.0)
     assert run("scale", "--length", "-1", "--mass", "2").returncode == 2
     assert run("scale", "--length", "inf", "--mass", "2").returncode == 2    # no Infinity in the JSON
+
+
+def test_bench_of_an_unknown_scene_exits_2_listing_the_known_ones(tmp_path, capsys):
+    """`bench --scene` takes the names of the bench's own scenes; another name is bad input, not a traceback."""
+    assert main(["bench", "--quick", "--scene", "nosuch", "--out", str(tmp_path)]) == 2
+    err = capsys.readouterr().err
+    assert "--scene" in err and "flat_drop" in err and "nosuch" in err
+    assert not any(tmp_path.iterdir())

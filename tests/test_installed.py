@@ -70,7 +70,7 @@ def ran(installed, tmp_path_factory):
         ("sweep", str(study), "--out", "w", "--workers", "1"): (0, "w/outcomes.json"),
         ("scale", "--length", "2", "--mass", "8", "--json", "scale.json"): (0, "scale.json"),
         ("reports", "--out", "r"): (0, "r/drops/drops.json"),
-        ("bench", "--quick", "--out", "b"): (0, "b/bench.json"),
+        ("bench", "--quick", "--scene", "flat_drop", "--out", "b"): (0, "b/bench.json"),
     }
     return tmp_path, {args: (_run(site, tmp_path, *args), status, output) for args, (status, output) in expected.items()}
 

@@ -22,6 +22,7 @@ from alightsize_sim.articulated_leg import ArticulatedLeg
 from alightsize_sim.landing import Controls, Result, _Run, accel_g, initial_state, simulate
 
 from alightsize.common.atomic import write_atomic
+from alightsize.common.errors import InputError
 from alightsize.common.resources import data_dir
 from alightsize.model.scene_config import SceneConfig, read_scene
 
@@ -43,17 +44,18 @@ def _scenes(quick: bool) -> list[tuple[SceneConfig, float | None, dict]]:
     configuration 5 slipping down a 35 deg slope (the hardest speed case), each to its outcome (None: the
     scene's own stops; the scipy baselines cover the reference's span). The articulated landing tips at about
     0.25 s; with the tip stop off it would go on with a leg lying flat, where one slide runs to the edge of the
-    leg's reach in a step and its force spikes (docs/simulator.md). Quick: the flat drop, configuration 2 and
-    the articulated case."""
+    leg's reach in a step and its force spikes (docs/simulator.md); the same landing with 5 lb footpads whose
+    slide is integrated (footpad_mass). Quick: the flat drop, configuration 2 and the two articulated cases."""
     cfg2 = read_scene(EXAMPLES / "telescoping_config2.toml")
     flat = (read_scene(EXAMPLES / "flat_drop.toml"), 0.12, REFERENCE)
     config2 = (cfg2, 0.3, REFERENCE)
     cfg5 = read_scene(EXAMPLES / "articulated_config5_slope35.toml")
     articulated = (dataclasses.replace(cfg5, name=f"{cfg5.name} (whole landing)"), None, FINE_STEP)
+    footpads = (read_scene(EXAMPLES / "articulated_config5_slope35_footpads.toml"), None, REFERENCE)
     if quick:
-        return [flat, config2, articulated]
+        return [flat, config2, articulated, footpads]
     return [flat, config2, (read_scene(EXAMPLES / "telescoping_config1_run12101.toml"), 0.3, REFERENCE), articulated,
-            (dataclasses.replace(cfg2, name="telescoping_config2 (whole landing)"), None, REFERENCE)]
+            footpads, (dataclasses.replace(cfg2, name="telescoping_config2 (whole landing)"), None, REFERENCE)]
 
 
 def _controls(cfg: SceneConfig, t_sim: float | None, **kw) -> Controls:
@@ -223,13 +225,23 @@ def _said(case: dict) -> str:
             f"{case['repeats']}), peak XDD(3) error {case['err_peak_xdd3_rel']:.1e}")
 
 
-def run_bench(quick: bool = False, progress=print) -> dict:
+def _chosen(scenes: list, only: tuple[str, ...]) -> list:
+    """The scenes named in `only` (a scene's name without its parenthesis), all when it is empty; an unknown
+    name is an InputError listing the known ones."""
+    names = [cfg.name.split(" (")[0] for cfg, _, _ in scenes]
+    unknown = [n for n in only if n not in names]
+    if unknown:
+        raise InputError("(command line)", "--scene", f"one of {', '.join(dict.fromkeys(names))}", unknown[0])
+    return [s for s, name in zip(scenes, names) if not only or name in only]
+
+
+def run_bench(quick: bool = False, progress=print, only: tuple[str, ...] = ()) -> dict:
     ladder = [1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7] if not quick else [1e-3, 1e-5, 1e-7]
     fixed = [4e-4, 2e-4, 1e-4, 5e-5] if not quick else [1e-4]
     scipy_ladder = [1e-3, 1e-5, 1e-7] if not quick else [1e-4]
     repeats = 5 if not quick else 3                                 # every case, compiled or not, alike
     t0 = time.perf_counter()
-    scenes = _scenes(quick)
+    scenes = _chosen(_scenes(quick), only)
     cfg0 = scenes[0][0]
     simulate(cfg0.scene, _controls(cfg0, 0.01))                      # load the compiled code
     compile_s = time.perf_counter() - t0
