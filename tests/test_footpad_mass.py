@@ -7,6 +7,7 @@ import pytest
 
 from alightsize.common.errors import InputError
 from alightsize.common.resources import data_dir
+from alightsize.landings.output import outcome
 from alightsize.model.scene_config import read_scene
 from alightsize_sim.landing import simulate
 
@@ -91,3 +92,19 @@ def test_scene_files_take_a_footpad_mass_and_any_friction_from_zero(tmp_path):
         read_scene(SCENES / "telescoping_config2.toml", {"legs.footpad_mass": "-1 kg"})
     with pytest.raises(InputError, match="terrain.mu_dynamic"):
         read_scene(SCENES / "telescoping_config2.toml", {"terrain.mu_static": 0.0, "terrain.mu_dynamic": -0.1})
+
+
+def test_walking_down_a_35_degree_slope_with_5_lb_footpads_loses_what_a_sliding_block_loses():
+    """Configuration 5 walking 5 s down 35 deg (mu_D 0.5 < tan 35 deg) with 5 lb footpads: friction takes
+    mu_D cot(gamma) = 0.714 of the released potential energy, as for a block sliding down the slope (measured
+    0.714 at rtol 1e-4 and 1e-6; the massless model gives 0.67-0.72 as its tolerance changes). 2 % allows for
+    the cells' share and the hops. Closure below 1e-4."""
+    cfg = read_scene(SCENES / "articulated_config5.toml",
+                     {"terrain.slope": "35 deg", "terrain.mu_static": 0.6, "terrain.mu_dynamic": 0.5,
+                      "initial.velocity": ["0 ft/s", "5 ft/s", "-10 ft/s"], "initial.roll": "0 deg",
+                      "legs.footpad_mass": "5 lb"})
+    res = simulate(cfg.scene, dataclasses.replace(cfg.controls, rtol=1e-4))
+    assert outcome(cfg, res)[0] == "walking" and res.t[-1] == pytest.approx(5.0)
+    share = res.energy["friction_J"] / res.energy["potential_change_J"]
+    assert share == pytest.approx(0.5 / np.tan(np.radians(35.0)), rel=0.02)
+    assert res.energy["closure_rel"] < 1e-4
