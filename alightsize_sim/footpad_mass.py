@@ -73,7 +73,7 @@ def pad_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, f
         vr = (v[0], v[1], v[2])
     else:
         o = NB + 4 * i
-        P[0], P[1], P[2] = y[o], y[o + 1], 0.0
+        P[0], P[1], P[2] = y[o], y[o + 1], P0[2]
         vr = (v[0] - y[o + 2], v[1] - y[o + 3], v[2])
     power, alpha, beta, psi = leg_force(geo, cells, i, mem, shape, P, r, R, vr, w, defl, frc, rte, X)
     if sliding == STICK:
@@ -222,6 +222,6 @@ def _settle(mu, y, i, P, sliding, Xt, R):
         return False
     o = NB + 4 * i
     _stop(mu, y, i, len(sliding))
-    P[i, 0], P[i, 1], P[i, 2] = y[o], y[o + 1], 0.0
+    P[i, 0], P[i, 1] = y[o], y[o + 1]                     # its height as the step loop last placed it
     sliding[i] = STICK
     return True

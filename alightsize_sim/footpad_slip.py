@@ -102,7 +102,7 @@ def _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
 @njit(cache=True)
 def _at(geo, cells, i, mem, shape, mu, P0, d0, d1, s, r, R, v, w, P, defl, frc, rte, X):
     """Excess FE12 - mu FE3 and force scale with the footpad at P0 + s d; False out of the leg's reach."""
-    P[0], P[1], P[2] = P0[0] + s * d0, P0[1] + s * d1, 0.0
+    P[0], P[1], P[2] = P0[0] + s * d0, P0[1] + s * d1, P0[2]
     fe12, fe3, _, _, _, _, _, _ = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
     if defl[0] < main_set(cells, i, mem):
         return -1.0, 0.0, False
@@ -253,7 +253,7 @@ def _slide(geo, cells, i, mem, shape, P0, mu_d, r, R, v, w, P, defl, frc, rte, X
         step = 4.0 * (s_lo - s_prev)
     s_end, ok_hi = _refine(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_lo, h_lo, s_hi, h_hi, ok_hi, r, R, v, w, P,
                            defl, frc, rte, X, tol)
-    P[0], P[1], P[2] = P0[0] + s_end * d0, P0[1] + s_end * d1, 0.0
+    P[0], P[1], P[2] = P0[0] + s_end * d0, P0[1] + s_end * d1, P0[2]
     fe12, fe3, fe1, fe2, power, alpha, beta, psi = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
     deficit = 0.0 if ok_hi else max(fe12 - mu_d * max(fe3, 0.0), 0.0) / cells[3][i, 0]
     path = 0.5 * s_end * np.hypot(d0 + fe1 / fe12, d1 + fe2 / fe12) if fe12 > FLOOR else 0.0

@@ -19,6 +19,8 @@ from .stability import quiescence_momenta
 from .articulated_leg import ArticulatedLeg
 from .footpad_mass import NB, PadModel, n_states
 from .legs import free_footpad, initial_shape, pack
+from .terrain import Terrain, clearance
+from .terrain import pack as pack_terrain
 from .telescoping_leg import TelescopingLeg
 
 G0 = 9.80665
@@ -30,7 +32,8 @@ class Scene:
     initial velocity (terrain), attitude quaternion (principal -> terrain) and body rates (principal axes),
     static and dynamic friction, the capsule's up axis and body points (principal axes, from the CG) that
     must stay clear of the terrain, the mass of each footpad (kg; 0: massless footpads that slide by a root
-    search, the report's model) and the Karnopp velocity band of footpads with mass (m/s; footpad_mass)."""
+    search, the report's model), the Karnopp velocity band of footpads with mass (m/s; footpad_mass) and the
+    terrain's features on the plane (terrain axes, from the capsule's first-contact CG; alightsize_sim.terrain)."""
 
     mass: float
     inertia: np.ndarray
@@ -45,6 +48,7 @@ class Scene:
     body_points: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))
     footpad_mass: float = 0.0
     footpad_band: float = 1e-3
+    terrain: Terrain = field(default_factory=Terrain)
 
 
 @dataclass(frozen=True)
@@ -131,7 +135,8 @@ class _Run:
 
     def __init__(self, scene: Scene, ctl: Controls):
         self.scene, self.ctl = scene, ctl
-        self.geo, self.cells = pack(scene.legs)
+        geo, self.cells = pack(scene.legs)
+        self.geo = (*geo, pack_terrain(scene.terrain))         # geo[9]: the terrain (alightsize_sim.terrain)
         n, C = self.cells[2].shape
         self.n, self.C = n, C
         self.bottoming = np.full((n, C), np.inf)
@@ -202,8 +207,8 @@ class _Run:
         return dy
 
     def heights(self, r: np.ndarray, R: np.ndarray) -> np.ndarray:
-        return np.array([free_footpad(self.geo, self.cells, i, self.mem[i], self.shape[i], r, R)[2]
-                         for i in range(self.n)])
+        feet = [free_footpad(self.geo, self.cells, i, self.mem[i], self.shape[i], r, R) for i in range(self.n)]
+        return np.array([clearance(self.geo[9], *foot) for foot in feet])
 
     def loop(self, y: np.ndarray, t: float) -> tuple[int, float]:
         s = self.scene

@@ -23,6 +23,7 @@ from .footpad_slip import contact_force, slip_events
 from .rigid_body import free_flight, quat_matrix, quat_rate
 from .stability import hanging_margin, quiescence_momenta, quiescence_update, stable_by_energy, tipping_margins
 from .legs import free_footpad, leg_force, lift_shape, main_set, member_strike
+from .terrain import clearance, height
 from .vec3 import cross, mtv, mv
 
 # Dormand-Prince 5(4).
@@ -53,6 +54,7 @@ GTOL = 1e-12       # m: a contact event function this close above zero counts as
 ARM = 1e-7          # m: a leg's next switch is armed once it is this far from its last one
 LOCKED = -1         # armed[i]: a leg that left at once on touching stays unarmed until it touches again
 BAND = 1e-4         # m: an unarmed leg switches only this far past zero (grazing contact never chatters)
+FACE = 1e-3         # m: a footpad touching down this far above the surface under it met a vertical face
 PATH_FLOOR = 100.0  # event_tol: steps this short or shorter skip the footpad path error (_error_norm)
 
 
@@ -182,7 +184,8 @@ def _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt,
         if contact[i]:
             g[i] = dt[i, 0] - main_set(cells, i, mem[i]) - mt[i, 1]
         else:
-            g[i] = free_footpad(geo, cells, i, mem[i], shape[i], y[0:3], R)[2]
+            foot = free_footpad(geo, cells, i, mem[i], shape[i], y[0:3], R)
+            g[i] = clearance(geo[9], foot[0], foot[1], foot[2])
         if not (raw or armed[i] > 0 or (contact[i] and mt[i, 1] > 0.0)):
             g[i] += BAND
         g[n + i] = mt[i, 0] if located and contact[i] else 1.0
@@ -310,7 +313,10 @@ def switch(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, which, las
         last[which, 2 * C] = 0.0
     else:
         pad = free_footpad(geo, cells, which, mem[which], shape[which], y[0:3], R)
-        P[which, 0], P[which, 1], P[which, 2] = pad[0], pad[1], 0.0
+        top = height(geo[9], pad[0], pad[1])
+        # A footpad touching down on the surface sits on it; one whose clearance jumped (swept into a step's
+        # riser or a box's side) is caught on that face where it is.
+        P[which, 0], P[which, 1], P[which, 2] = pad[0], pad[1], top if pad[2] - top <= FACE else pad[2]
         contact[which], sliding[which] = 1, 1                   # (re)contact slides on mu_D (eq. 33)
         pad_switch(mu, y, which, P, sliding, True)
         leg_force(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R, v, y[10:13], dt[which],
@@ -342,7 +348,8 @@ def _monitor(geo, cells, mass, inertia, gravity, bottoming, up, body, order, mem
         run[S_STRUCK] = struck
         return MEMBER
     for b in range(body.shape[0]):
-        if y[2] + R[2, 0] * body[b, 0] + R[2, 1] * body[b, 1] + R[2, 2] * body[b, 2] < ctl[C_CLEAR]:
+        p0, p1, p2 = mv(R, body[b, 0], body[b, 1], body[b, 2])
+        if clearance(geo[9], y[0] + p0, y[1] + p1, y[2] + p2) < ctl[C_CLEAR]:
             return BODY
     on_ground = 0
     for i in range(n):
@@ -397,7 +404,8 @@ def _hanging_clear(geo, cells, mass, inertia, gravity, order, mem, contact, P, s
         while not contact[order[b]]:
             b = (b + 1) % n
         foot = free_footpad(geo, cells, i, mem[i], shape[i], y[0:3], R)
-        if not (foot[2] > 0.0 and hanging_margin(y[0:3], y[3:6], y[10:13], mass, inertia, gravity, P[order[a]],
+        if not (clearance(geo[9], foot[0], foot[1], foot[2]) > 0.0 and hanging_margin(y[0:3], y[3:6], y[10:13], mass,
+                                                                                     inertia, gravity, P[order[a]],
                                                  P[order[b]], foot) > 0.0):   # NaN is not clear
             return False
     return True

@@ -2,7 +2,8 @@
 (alightsize.landings.random_landings), each run to its outcome or t_final, on a process pool.
 
 Reports the outcome counts, failures (must be none), the worst energy closure, and the wall time per landing
-and per simulated second. Usage: python benchmarks/random_scenes.py [-n 1000] [--t-final 1.0] [--workers 2]
+and per simulated second. With --terrain each landing has one random step or rock within the leg span.
+Usage: python benchmarks/random_scenes.py [-n 1000] [--t-final 1.0] [--workers 2] [--terrain]
 [--json FILE]
 """
 
@@ -28,9 +29,9 @@ BASE = Path(__file__).resolve().parent.parent / "examples" / "affdl-tr-66-33" / 
 SEED = 20261121
 
 
-def one(k: int, t_final: float) -> dict:
+def one(k: int, t_final: float, features: bool = False) -> dict:
     base = read_scene(BASE)
-    res = simulate(random_landing(base.scene, SEED, k), dataclasses.replace(base.controls, t_final=t_final))
+    res = simulate(random_landing(base.scene, SEED, k, features), dataclasses.replace(base.controls, t_final=t_final))
     return {"k": k, "status": res.status, "t_end": float(res.t[-1]), "wall_s": res.wall_s, "steps": res.steps,
             "rejected": res.rejected, "events": res.events, "closure_rel": res.energy["closure_rel"],
             "finite": bool(np.isfinite(res.y).all())}
@@ -42,15 +43,17 @@ def main() -> None:
     ap.add_argument("--t-final", type=float, default=1.0)
     ap.add_argument("--workers", type=int, default=os.cpu_count())
     ap.add_argument("--json", type=Path)
+    ap.add_argument("--terrain", action="store_true", help="a random step or rock within the leg span in each")
     a = ap.parse_args()
     one(0, 0.01)                                           # compile (cached) before timing
     t0 = time.perf_counter()
     with ProcessPoolExecutor(a.workers) as pool:
-        runs = list(pool.map(one, range(a.n), [a.t_final] * a.n, chunksize=8))
+        runs = list(pool.map(one, range(a.n), [a.t_final] * a.n, [a.terrain] * a.n, chunksize=8))
     wall = time.perf_counter() - t0
     walls = np.array([r["wall_s"] for r in runs])
     sim_t = np.array([r["t_end"] for r in runs])
-    out = {"n": a.n, "t_final_s": a.t_final, "workers": a.workers, "machine": platform.processor() or platform.machine(),
+    out = {"n": a.n, "t_final_s": a.t_final, "workers": a.workers, "terrain": a.terrain,
+           "machine": platform.processor() or platform.machine(),
            "outcomes": dict(Counter(r["status"] for r in runs)),
            "failed": [r["k"] for r in runs if r["status"] == "failed" or not r["finite"]],
            "closure_rel_max": max(r["closure_rel"] for r in runs),

@@ -217,6 +217,7 @@ def test_sweep_command_writes_the_contract_outputs(tmp_path):
     doc = json.loads((tmp_path / "o" / "outcomes.json").read_text())
     assert doc["schema"] == "alightsize.sweep/1" and doc["done"] == 8
     assert sum(v["count"] for v in doc["outcomes"].values()) == 8
+    assert set(doc["outcomes"]) >= {"stable", "walking", "time_out", "tipped", "bottomed", "body_contact", "failed"}
     for v in doc["outcomes"].values():
         assert v["ci95"] == pytest.approx(list(wilson(v["count"], 8)))
     html = (tmp_path / "o" / "report.html").read_text()

@@ -37,11 +37,17 @@ class Node:
 
     def set_path(self, dotted: str, value: Any) -> None:
         """Set the value at a dotted key path below this table (creating tables on the way); a last key
-        with an index, `initial.velocity[2]`, sets that element of an existing array."""
+        with an index, `initial.velocity[2]`, sets that element of an existing array, and an indexed table on
+        the way, `terrain.rocks[0].x`, is that element of an existing array of tables."""
         *tables, last = dotted.split(".")
         data = self.data
         for k, name in enumerate(tables):
-            data = data.setdefault(name, {})
+            m = _INDEXED.fullmatch(name)
+            if m:
+                array, index = data.get(m.group(1)), int(m.group(2))
+                data = array[index] if isinstance(array, list) and index < len(array) else None
+            else:
+                data = data.setdefault(name, {})
             if not isinstance(data, dict):
                 raise self.error(".".join(tables[:k + 1]), "a table to set " + dotted + " in", _describe(data))
         m = _INDEXED.fullmatch(last)

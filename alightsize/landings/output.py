@@ -16,6 +16,7 @@ from alightsize_sim.rigid_body import quat_matrix, roll_yaw_pitch
 
 from alightsize.common.atomic import write_atomic
 from alightsize.model.scene_config import SceneConfig
+from alightsize.landings.footprints import features_met, plot_footprints
 from alightsize.landings.shock_spectrum import default_frequencies, srs
 
 ONSET_WINDOW = 1e-3        # s: onset rates are slopes of the acceleration sampled at this interval
@@ -89,6 +90,7 @@ def summary(cfg: SceneConfig, res: Result) -> dict:
     xdd, omd = body_histories(cfg, res)
     kind, reason = outcome(cfg, res)
     legs = []
+    met = features_met(cfg.scene, res)
     for i, leg in enumerate(cfg.scene.legs):
         cells = []
         for j, cell in enumerate(leg.cells):
@@ -97,7 +99,8 @@ def summary(cfg: SceneConfig, res: Result) -> dict:
                           "permanent_set_m": float(crush_cell.permanent_set(cell.k, dmax, fmax)),
                           "energy_J": float(res.cell_energy[i, j]), "bottomed": bool(dmax > cell.curve.bottoming)})
         legs.append({"leg": i + 1, "cells": cells,
-                     "max_ground_force_N": float(np.max(np.linalg.norm(res.leg_force[:, i], axis=1)))})
+                     "max_ground_force_N": float(np.max(np.linalg.norm(res.leg_force[:, i], axis=1))),
+                     "features": met[i]})
     return {"schema": "alightsize.simulate/1", "scene": cfg.name, "outcome": kind, "reason": reason,
             "t_end_s": float(res.t[-1]),
             "peak": {"xdd_g": np.max(np.abs(xdd), axis=0).tolist(), "omd_rad_s2": np.max(np.abs(omd), axis=0).tolist(),
@@ -200,6 +203,10 @@ def plots(cfg: SceneConfig, res: Result, out: Path) -> list[Path]:
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
     save(fig, "energy.png")
+    fig, ax = plt.subplots(figsize=(6, 6), layout="constrained")
+    plot_footprints(cfg.scene, res, ax)
+    ax.set_title("Footprints on the terrain (plan, terrain axes)")
+    save(fig, "footprints.png")
     if res.t[-1] > 0:
         f = default_frequencies(1.0, 1000.0)
         spec = srs(res.t, xdd[:, 2], f, cfg.srs_damping)

@@ -19,6 +19,7 @@ from alightsize_sim.landing import G0, Controls, Scene
 from alightsize_sim.rigid_body import matrix_quat
 from alightsize_sim.articulated_leg import ArticulatedLeg
 from alightsize_sim.telescoping_leg import TelescopingLeg
+from alightsize_sim.terrain import Box, HeightField, Hemisphere, Step, Terrain
 
 from alightsize.common.config import Node, load_toml
 from alightsize.model.gravity import read_gravity
@@ -134,6 +135,55 @@ def _legs(node: Node, cells: dict[str, Node]) -> list[dict]:
                          lever=lever, angles=angles, axial=axial, pads=pads, small=small, factors=factors[i],
                          footpad_mass=pad_mass))
     return legs
+
+
+def _features(ter: Node, path: Path) -> Terrain:
+    """Steps, rocks and a height field on the terrain plane (terrain axes: x, y in the plane, from the point
+    under the capsule's CG at first contact; docs/terrain.md)."""
+    steps = []
+    for n in ter.tables("steps", optional=True):
+        n.allow(("x", "y", "direction", "height", "note"))
+        steps.append(Step(n.quantity("x", "length", positive=False), n.quantity("y", "length", positive=False),
+                          float(np.degrees(n.quantity("direction", "angle", positive=False))),
+                          n.quantity("height", "length", positive=False)))
+        n.string("note", "")
+        n.finish()
+    hemispheres, boxes = [], []
+    for n in ter.tables("rocks", optional=True):
+        shape = n.string("shape", choices=("hemisphere", "box"))
+        x, y = n.quantity("x", "length", positive=False), n.quantity("y", "length", positive=False)
+        if shape == "hemisphere":
+            n.allow(("shape", "x", "y", "radius", "note"))
+            hemispheres.append(Hemisphere(x, y, n.quantity("radius", "length")))
+        else:
+            n.allow(("shape", "x", "y", "length", "width", "height", "yaw", "note"))
+            yaw = n.quantity("yaw", "angle", positive=False) if n.has("yaw") else 0.0
+            boxes.append(Box(x, y, n.quantity("length", "length"), n.quantity("width", "length"),
+                             n.quantity("height", "length"), float(np.degrees(yaw))))
+        n.string("note", "")
+        n.finish()
+    field = None
+    f = ter.table("height_field", optional=True)
+    if f:
+        f.allow(("file", "spacing", "origin", "note"))
+        name = f.string("file")
+        spacing = [f.parse_quantity(f"spacing[{i}]", v, "length") for i, v in enumerate(_pair(f, "spacing"))]
+        origin = ([f.parse_quantity(f"origin[{i}]", v, "length", positive=False)
+                   for i, v in enumerate(_pair(f, "origin"))] if f.has("origin") else [0.0, 0.0])
+        f.string("note", "")
+        f.finish()
+        try:
+            field = HeightField.from_file(path.parent / name, spacing[0], spacing[1], origin[0], origin[1])
+        except (OSError, ValueError) as exc:
+            raise f.error("file", "a .npy or .csv grid of finite heights (m), at least 2 x 2", str(exc)) from None
+    return Terrain(tuple(steps), tuple(hemispheres), tuple(boxes), field)
+
+
+def _pair(node: Node, name: str) -> list:
+    values = node.raw(name)
+    if not isinstance(values, list) or len(values) != 2:
+        raise node.error(name, "an array of two lengths (x, y)", repr(values))
+    return values
 
 
 def _footpad_mass(node: Node) -> float:
@@ -313,8 +363,10 @@ def read_scene(path: str | Path, overrides: dict[str, object] | None = None) -> 
 
     ter = root.table("terrain", optional=True)
     slope = mu_s = mu_d = None
+    features = Terrain()
     if ter:
-        ter.allow(("slope", "mu_static", "mu_dynamic", "note"))
+        ter.allow(("slope", "mu_static", "mu_dynamic", "steps", "rocks", "height_field", "note"))
+        features = _features(ter, path)
         slope = ter.quantity("slope", "angle", 0.0, positive=False) if ter.has("slope") else 0.0
         mu_s = ter.number("mu_static", 1.5e6, positive=False)
         mu_d = ter.number("mu_dynamic", 1.0e6, positive=False)
@@ -371,7 +423,7 @@ def read_scene(path: str | Path, overrides: dict[str, object] | None = None) -> 
     body = np.zeros((0, 3)) if bottom is None else (to_geo.T @ (np.array([0.0, 0.0, -bottom]) - cg))[None, :]
     scene = Scene(mass, moments, tuple(legs), lepk @ np.array([0.0, 0.0, -g]), lepk @ vel, q0, to_geo.T @ rates,
                   mu_s if mu_s is not None else 1.5e6, mu_d if mu_d is not None else 1.0e6, to_geo.T @ np.array([0.0, 0, 1]),
-                  body, leg_specs[0]["footpad_mass"])
+                  body, leg_specs[0]["footpad_mass"], terrain=features)
     return SceneConfig(path, name, title, scene, c, to_geo, lepk, interval, srs_damping, tuple(names))
 
 

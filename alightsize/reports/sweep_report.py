@@ -57,9 +57,17 @@ def wilson(k: int, n: int) -> tuple[float, float]:
     return (max(0.0, centre - half), min(1.0, centre + half))
 
 
-def _proportions(values: list, n: int) -> dict:
-    return {str(k): {"count": c, "probability": c / n, "ci95": list(wilson(c, n))}
-            for k, c in sorted(Counter(values).items(), key=lambda kv: -kv[1])}
+OUTCOMES = ("stable", "walking", "time_out", "tipped", "bottomed", "body_contact", "failed")   # docs/contracts.md
+
+
+def _proportions(values: list, n: int, every: tuple[str, ...] = ()) -> dict:
+    """Count, share and Wilson 95 % interval of each value, most frequent first; the values in `every` are listed
+    even when none occurred (a zero count still bounds the probability: 0 of 1,000 is at most 0.38 %)."""
+    counts = Counter(values)
+    for k in every:
+        counts.setdefault(k, 0)
+    return {str(k): {"count": c, "probability": c / n if n else 0.0, "ci95": list(wilson(c, n))}
+            for k, c in sorted(counts.items(), key=lambda kv: -kv[1])}
 
 
 def _stats(x: np.ndarray) -> dict | None:
@@ -177,7 +185,7 @@ def results(study: Study, rows: list[dict]) -> dict:
     doc = {"schema": SCHEMA, "study": study.name, "title": study.title, "seed": study.seed, "version": __version__,
            "runs": len(study.runs), "stored": len(rows), "done": n,
            "failed": [r["run_id"] for r in rows if r["status"] == "failed" or r.get("outcome") == "failed"],
-           "outcomes": _proportions([r["outcome"] for r in done], n),
+           "outcomes": _proportions([r["outcome"] for r in done], n, OUTCOMES),
            "outcome_classes": _proportions([r["outcome_class"] for r in done], n),
            "successful": _proportions([_success(r) for r in done], n).get("True", {"count": 0, "probability": 0.0,
                                                                                  "ci95": list(wilson(0, n))}),
