@@ -34,7 +34,7 @@ from .legs import leg_force
 from .vec3 import mv
 
 NB = 14            # body states before the footpads'
-STICK, SLIDE, BAND = 0, 1, 2
+FACE, STICK, SLIDE, BAND = -1, 0, 1, 2   # FACE: held on a vertical face it met (any friction model)
 FLOOR = 1e-6       # N: in-plane force below this never starts a slide (round-off at zero load)
 
 PadModel = namedtuple("PadModel", "mu_s mu_d mass band")
@@ -68,7 +68,7 @@ def pad_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, f
     tuple as footpad_slip.footpad_force: (mode, cells' power, alpha, beta, psi, event value, 0, 0). The event
     value is the static margin mu_S FE3 + FLOOR - FE12 while it sticks, |u| - band while it slides and
     band - |u| in the band."""
-    if sliding == STICK:
+    if sliding <= STICK:                                        # sticking, or held on a face (FACE)
         P[0], P[1], P[2] = P0[0], P0[1], P0[2]
         vr = (v[0], v[1], v[2])
     else:
@@ -76,7 +76,9 @@ def pad_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, f
         P[0], P[1], P[2] = y[o], y[o + 1], P0[2]
         vr = (v[0] - y[o + 2], v[1] - y[o + 3], v[2])
     power, alpha, beta, psi = leg_force(geo, cells, i, mem, shape, P, r, R, vr, w, defl, frc, rte, X)
-    if sliding == STICK:
+    if sliding == FACE:
+        g = 1.0
+    elif sliding == STICK:
         fe = mv(R, X[0], X[1], X[2])
         g = mu.mu_s * max(fe[2], 0.0) + FLOOR - np.sqrt(fe[0] * fe[0] + fe[1] * fe[1])    # eq. 33
     else:
@@ -130,7 +132,7 @@ def _rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy):
                                           mem[i, j, 1], dt[i, j], 0.0)
                 dy[k] = (ft[i, j] - static) * rt[i, j]
                 other -= ft[i, j] * rt[i, j]
-        if contact[i] and sliding[i] != STICK:
+        if contact[i] and sliding[i] > STICK:
             fe = mv(R, Xt[i, 0], Xt[i, 1], Xt[i, 2])
             u0, u1 = y[o + 2], y[o + 3]
             g0, g1 = _friction(mu, sliding[i], fe[0], fe[1], fe[2], u0, u1)

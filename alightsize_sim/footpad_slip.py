@@ -207,6 +207,8 @@ def footpad_force(geo, cells, i, mem, shape, P0, sliding, hold, mu_s, mu_d, r, R
     of a uniformly turning path), the step loop's error control for the footpad position."""
     P[0], P[1], P[2] = P0[0], P0[1], P0[2]
     fe12, fe3, fe1, fe2, power, alpha, beta, psi = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
+    if sliding < 0:                                             # held on a vertical face (FACE)
+        return sliding, power, alpha, beta, psi, 1.0, 0.0, 0.0
     margin = mu_s * max(fe3, 0.0) + FLOOR - fe12 if not sliding else 1.0   # watched only while it sticks
     if (hold and not sliding) or fe12 <= (mu_d if sliding else mu_s) * max(fe3, 0.0) + FLOOR:   # eq. 33-34
         return 0, power, alpha, beta, psi, margin, 0.0, 0.0

@@ -18,7 +18,7 @@ import numpy as np
 from numba import njit
 
 from . import crush_cell
-from .footpad_mass import FLOOR, integrates_dampers, pad_event, pad_rates, pad_settle, pad_switch
+from .footpad_mass import FACE, FLOOR, integrates_dampers, pad_event, pad_rates, pad_settle, pad_switch
 from .footpad_slip import contact_force, slip_events
 from .rigid_body import free_flight, quat_matrix, quat_rate
 from .stability import hanging_margin, quiescence_momenta, quiescence_update, stable_by_energy, tipping_margins
@@ -54,7 +54,7 @@ GTOL = 1e-12       # m: a contact event function this close above zero counts as
 ARM = 1e-7          # m: a leg's next switch is armed once it is this far from its last one
 LOCKED = -1         # armed[i]: a leg that left at once on touching stays unarmed until it touches again
 BAND = 1e-4         # m: an unarmed leg switches only this far past zero (grazing contact never chatters)
-FACE = 1e-3         # m: a footpad touching down this far above the surface under it met a vertical face
+FACE_GAP = 1e-3     # m: a footpad touching down this far above the surface under it met a vertical face
 PATH_FLOOR = 100.0  # event_tol: steps this short or shorter skip the footpad path error (_error_norm)
 
 
@@ -315,10 +315,13 @@ def switch(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, which, las
         pad = free_footpad(geo, cells, which, mem[which], shape[which], y[0:3], R)
         top = height(geo[9], pad[0], pad[1])
         # A footpad touching down on the surface sits on it; one whose clearance jumped (swept into a step's
-        # riser or a box's side) is caught on that face where it is.
-        P[which, 0], P[which, 1], P[which, 2] = pad[0], pad[1], top if pad[2] - top <= FACE else pad[2]
+        # riser or a box's side) is caught on that face where it is and held there until it lifts off.
+        on_face = pad[2] - top > FACE_GAP
+        P[which, 0], P[which, 1], P[which, 2] = pad[0], pad[1], pad[2] if on_face else top
         contact[which], sliding[which] = 1, 1                   # (re)contact slides on mu_D (eq. 33)
         pad_switch(mu, y, which, P, sliding, True)
+        if on_face:
+            sliding[which] = FACE
         leg_force(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R, v, y[10:13], dt[which],
                   ft[which], rt[which], Xt[which])
         for j in range(C):

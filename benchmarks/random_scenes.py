@@ -3,7 +3,7 @@
 
 Reports the outcome counts, failures (must be none), the worst energy closure, and the wall time per landing
 and per simulated second. With --terrain each landing has one random step or rock within the leg span.
-Usage: python benchmarks/random_scenes.py [-n 1000] [--t-final 1.0] [--workers 2] [--terrain]
+Usage: python benchmarks/random_scenes.py [-n 1000] [--t-final 1.0] [--workers 2] [--terrain] [--footpad-mass KG]
 [--json FILE]
 """
 
@@ -29,9 +29,10 @@ BASE = Path(__file__).resolve().parent.parent / "examples" / "affdl-tr-66-33" / 
 SEED = 20261121
 
 
-def one(k: int, t_final: float, features: bool = False) -> dict:
+def one(k: int, t_final: float, features: bool = False, footpad_mass: float = 0.0) -> dict:
     base = read_scene(BASE)
-    res = simulate(random_landing(base.scene, SEED, k, features), dataclasses.replace(base.controls, t_final=t_final))
+    scene = dataclasses.replace(random_landing(base.scene, SEED, k, features), footpad_mass=footpad_mass)
+    res = simulate(scene, dataclasses.replace(base.controls, t_final=t_final))
     return {"k": k, "status": res.status, "t_end": float(res.t[-1]), "wall_s": res.wall_s, "steps": res.steps,
             "rejected": res.rejected, "events": res.events, "closure_rel": res.energy["closure_rel"],
             "finite": bool(np.isfinite(res.y).all())}
@@ -44,15 +45,17 @@ def main() -> None:
     ap.add_argument("--workers", type=int, default=os.cpu_count())
     ap.add_argument("--json", type=Path)
     ap.add_argument("--terrain", action="store_true", help="a random step or rock within the leg span in each")
+    ap.add_argument("--footpad-mass", type=float, default=0.0, help="footpad mass, kg (0: massless, the default)")
     a = ap.parse_args()
     one(0, 0.01)                                           # compile (cached) before timing
     t0 = time.perf_counter()
     with ProcessPoolExecutor(a.workers) as pool:
-        runs = list(pool.map(one, range(a.n), [a.t_final] * a.n, [a.terrain] * a.n, chunksize=8))
+        runs = list(pool.map(one, range(a.n), [a.t_final] * a.n, [a.terrain] * a.n, [a.footpad_mass] * a.n,
+                             chunksize=8))
     wall = time.perf_counter() - t0
     walls = np.array([r["wall_s"] for r in runs])
     sim_t = np.array([r["t_end"] for r in runs])
-    out = {"n": a.n, "t_final_s": a.t_final, "workers": a.workers, "terrain": a.terrain,
+    out = {"n": a.n, "t_final_s": a.t_final, "workers": a.workers, "terrain": a.terrain, "footpad_mass_kg": a.footpad_mass,
            "machine": platform.processor() or platform.machine(),
            "outcomes": dict(Counter(r["status"] for r in runs)),
            "failed": [r["k"] for r in runs if r["status"] == "failed" or not r["finite"]],
