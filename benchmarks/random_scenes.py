@@ -55,7 +55,8 @@ def main() -> None:
     wall = time.perf_counter() - t0
     walls = np.array([r["wall_s"] for r in runs])
     sim_t = np.array([r["t_end"] for r in runs])
-    out = {"n": a.n, "t_final_s": a.t_final, "workers": a.workers, "terrain": a.terrain, "footpad_mass_kg": a.footpad_mass,
+    out = {"n": a.n, "t_final_s": a.t_final, "workers": a.workers, "terrain": a.terrain,
+           "footpad_mass_kg": a.footpad_mass,
            "machine": platform.processor() or platform.machine(),
            "outcomes": dict(Counter(r["status"] for r in runs)),
            "failed": [r["k"] for r in runs if r["status"] == "failed" or not r["finite"]],
