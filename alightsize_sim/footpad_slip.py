@@ -38,7 +38,7 @@ import numpy as np
 from numba import njit, types
 from numba.extending import overload
 
-from .footpad_mass import FLOOR, is_pad, pad_force
+from .footpad_mass import FLOOR, PadModel, is_pad, pad_force
 from .legs import leg_force, main_set
 from .vec3 import mv
 
@@ -50,7 +50,7 @@ MAX_DIP = 24         # golden-section steps: the dip is found to 1e-5 of the int
 def slip_events(mu):
     """Whether stick-to-slip is located as an event: only when the force drops there (mu_S > mu_D; never for
     held footpads, mu None; always for footpads with mass, whose band is located too)."""
-    return mu is not None and _drops(mu)
+    return mu is not None and (isinstance(mu, PadModel) or _drops(mu))
 
 
 @njit(cache=True)
