@@ -90,14 +90,17 @@ def test_audit_fails_when_a_wall_is_thinned(tmp_path):
     (lambda t: t.replace("required_design_factor = 1.2", "required_design_factor = inf"),
      "audit.required_design_factor", "inf"),
 ])
-def test_bad_input_exits_2_naming_file_key_expected_found(tmp_path, edit, key, found):
+def test_bad_input_exits_2_naming_file_key_expected_found(tmp_path, capsys, edit, key, found):
+    """In process (the command line's own entry point is exercised by test_missing_file_exits_2): main
+    returns 2 and prints no trace, as the installed command does."""
     cfg = tmp_path / "bad.toml"
     cfg.write_text(edit((EXAMPLES / "articulated_3457.toml").read_text()))
     for command in (["audit", cfg], ["design", cfg, "--out", tmp_path / "out"]):
-        r = run(*command)
-        assert r.returncode == 2, r.stderr
-        assert "Traceback" not in r.stderr
-        assert str(cfg) in r.stderr and key in r.stderr and "expected" in r.stderr and found in r.stderr
+        code = main([str(c) for c in command])
+        err = capsys.readouterr().err
+        assert code == 2, err
+        assert "Traceback" not in err
+        assert str(cfg) in err and key in err and "expected" in err and found in err
     assert not (tmp_path / "out").exists()
 
 

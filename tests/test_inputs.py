@@ -1,6 +1,8 @@
 """Input a new user gets wrong: printed section properties left from other dimensions, sizing a dimension a
 check overrides. Warnings name file and key path; errors exit 2 with file, key, expected and found."""
 
+import contextlib
+import io
 import subprocess
 import sys
 import warnings
@@ -20,6 +22,15 @@ SIZED = ROOT / "examples" / "sizing" / "articulated_3457_sized.toml"
 def run(*args) -> subprocess.CompletedProcess:
     return subprocess.run([sys.executable, "-m", "alightsize", *map(str, args)], capture_output=True, text=True,
                           cwd=ROOT)
+
+
+def cli(*args) -> subprocess.CompletedProcess:
+    """`run` in this process (the command line's main, without starting Python again): exit status and stderr."""
+    from alightsize.cli import main
+    err = io.StringIO()
+    with contextlib.redirect_stderr(err):
+        code = main([str(a) for a in args])
+    return subprocess.CompletedProcess(args, code, "", err.getvalue())
 
 
 def _stale_telescoping(tmp_path: Path) -> Path:
@@ -80,7 +91,7 @@ def test_sizing_a_wall_that_a_check_overrides_exits_2(tmp_path):
     assert text.count(old) == 1
     cfg = tmp_path / "sized.toml"
     cfg.write_text(text.replace(old, old + '  wall = "0.083 in"\n'))
-    r = run("design", cfg, "--out", tmp_path / "out")
+    r = cli("design", cfg, "--out", tmp_path / "out")
     assert r.returncode == 2, r.stderr
     assert "Traceback" not in r.stderr
     assert f'{cfg}: item["Parallelogram Post"].size.dimension: expected a dimension no check gives its own ' \
@@ -140,7 +151,7 @@ _TUBE_CHECKS = dict(kind="column_buckling", params='load = "1000 lbf"\n  length 
 def test_impossible_section_exits_2_naming_key_expected_found(tmp_path, fields, key, expected, found):
     cfg = tmp_path / "bad.toml"
     cfg.write_text(_ITEM.format(**fields))
-    r = run("design", cfg, "--out", tmp_path / "out")
+    r = cli("design", cfg, "--out", tmp_path / "out")
     assert r.returncode == 2, r.stderr
     assert "Traceback" not in r.stderr and "math domain error" not in r.stderr
     message = r.stderr.strip()
@@ -177,11 +188,11 @@ def test_key_paths_name_items_and_checks(tmp_path):
                                 section='{ shape = "rectangle", width = "1 in", height = "2 in" }')
                    + '  [[item.check]]\n  kind = "bending"\n  moment = "100 lbf"\n'
                    + '  [[item.check]]\n  kind = "tension"\n  load = "100 lb"\n')
-    r = run("design", cfg, "--out", tmp_path / "out")
+    r = cli("design", cfg, "--out", tmp_path / "out")
     assert r.returncode == 2 and "Traceback" not in r.stderr
     assert r.stderr.startswith(f'alightsize: error: {cfg}: item["Strut"].check[1].moment: expected a moment')
     cfg.write_text(cfg.read_text().replace('moment = "100 lbf"', 'moment = "100 lbf*in"'))
-    r = run("design", cfg, "--out", tmp_path / "out")
+    r = cli("design", cfg, "--out", tmp_path / "out")
     assert r.stderr.startswith(f'alightsize: error: {cfg}: item["Strut"].check["tension"].load: expected a force')
 
 

@@ -88,14 +88,14 @@ def test_design_follows_a_changed_cell_force(tmp_path):
     ('envelope = "3457", member = "PU1"', 'envelope = "34", member = "PU1"'),
     ('sense = "compression" }', 'sense = "squash" }'),
 ])
-def test_bad_envelope_reference_exits_2(tmp_path, edit, key):
+def test_bad_envelope_reference_exits_2(tmp_path, capsys, edit, key):
     ex = _copy_examples(tmp_path)
     cfg = ex / "articulated_3457_envelopes.toml"
     cfg.write_text(cfg.read_text().replace(edit, key, 1))
-    r = subprocess.run([sys.executable, "-m", "alightsize", "design", str(cfg), "--out", str(tmp_path / "o")],
-                       capture_output=True, text=True)
-    assert r.returncode == 2 and "Traceback" not in r.stderr
-    assert "articulated_3457_envelopes.toml" in r.stderr and 'item["Upper Truss"].check["compression"].load' in r.stderr
+    assert main(["design", str(cfg), "--out", str(tmp_path / "o")]) == 2        # the command line, in process
+    err = capsys.readouterr().err
+    assert "Traceback" not in err
+    assert "articulated_3457_envelopes.toml" in err and 'item["Upper Truss"].check["compression"].load' in err
     assert not (tmp_path / "o").exists()
 
 
