@@ -125,8 +125,8 @@ def cell_event(cells, cev, which, n):
 @njit(cache=True)
 def _legs(geo, cells, mu, mem, contact, P, sliding, shape, y, Pt, slt, dt, ft, Xt, mt, rt, R):
     """Footpad, slip state, forces and mt = (static margin, reach deficit, alpha, beta, psi, footpad path error)
-    of every leg at state y (mu = mu_S, mu_D, the slide's relative tolerance, or None: footpads held); returns
-    the cells' power."""
+    of every leg at state y (mu = mu_S, mu_D, the slide's relative tolerance; None: footpads held; a
+    footpad_mass.PadModel: footpads with mass, placed by y); returns the cells' power."""
     r, v, w = y[0:3], (y[3], y[4], y[5]), y[10:13]
     power = 0.0
     for i in range(len(contact)):
@@ -172,8 +172,8 @@ def _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt,
     grazing the terrain stays put at zero force until it clearly leaves instead of switching every step.
     Not so for a footpad slid to the edge of its reach (deficit > 0): it still carries force, beyond the
     friction cone, so it leaves at once.
-    g[n + i]: a sticking footpad's static margin mu_S FE3 + FLOOR - FE12 (N) when stick-to-slip is an event, else the
-    constant 1. g[2n + C i + j]: the deflection rate of cell j of leg i while its turn is watched (cell_events);
+    g[n + i]: a sticking footpad's static margin mu_S FE3 + FLOOR - FE12 (N) when stick-to-slip is an event (for
+    footpads with mass, a sliding one's distance from its Karnopp band, m/s), else the constant 1. g[2n + C i + j]: the deflection rate of cell j of leg i while its turn is watched (cell_events);
     g[(2 + C) n + C i + j]: its next loading-curve corner less its deflection (on the ground; else 1).
     Locating these keeps every step's forces smooth: the largest stroke, which sets the unloading branch and the
     bottoming margin, is then found to event_tol, not sampled at step points."""
