@@ -31,6 +31,7 @@ from numba.extending import overload
 
 from . import crush_cell
 from .legs import leg_force
+from .rigid_body import quat_matrix
 from .vec3 import mv
 
 NB = 14            # body states before the footpads'
@@ -119,7 +120,7 @@ def _pad_rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy
 
 def _rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy):
     n, C = len(contact), ft.shape[1]
-    cd, cf, cn, ck, cc, cy = cells
+    cd, cf, cn, ck, _, cy = cells
     extra, lost, other = 0.0, 0.0, power
     for i in range(n):
         o = NB + 4 * i
@@ -174,23 +175,23 @@ def _stop(mu, y, i, n):
     y[o + 2] = y[o + 3] = 0.0
 
 
-def pad_event(mu, y, i, P, sliding, Xt, R):
+def pad_event(mu, y, i, P, sliding, Xt):
     """A slip event of leg i (returns True: the forces change); without footpad mass a sticking footpad
     starts to slide."""
-    return (_event if isinstance(mu, PadModel) else _start)(mu, y, i, P, sliding, Xt, R)
+    return (_event if isinstance(mu, PadModel) else _start)(mu, y, i, P, sliding, Xt)
 
 
 @overload(pad_event)
-def _pad_event(mu, y, i, P, sliding, Xt, R):
+def _pad_event(mu, y, i, P, sliding, Xt):
     return _event if is_pad(mu) else _start
 
 
-def _start(mu, y, i, P, sliding, Xt, R):
+def _start(mu, y, i, P, sliding, Xt):
     sliding[i] = 1
     return True
 
 
-def _event(mu, y, i, P, sliding, Xt, R):
+def _event(mu, y, i, P, sliding, Xt):
     """STICK -> BAND (the static limit is passed: the footpad starts from rest); BAND -> SLIDE; SLIDE -> BAND,
     or STICK when the push is within the dynamic limit there."""
     if sliding[i] == STICK:
@@ -199,27 +200,27 @@ def _event(mu, y, i, P, sliding, Xt, R):
         sliding[i] = SLIDE
     else:
         sliding[i] = BAND
-        _settle(mu, y, i, P, sliding, Xt, R)
+        _settle(mu, y, i, P, sliding, Xt)
     return True
 
 
-def pad_settle(mu, y, i, P, sliding, Xt, R):
+def pad_settle(mu, y, i, P, sliding, Xt):
     """After an accepted step: a banded footpad whose push is below the dynamic limit sticks where it is
     (returns whether it did): a footpad touching down slides on mu_D like the massless one (eq. 33). A no-op
     without footpad mass."""
-    return isinstance(mu, PadModel) and _settle(mu, y, i, P, sliding, Xt, R)
+    return isinstance(mu, PadModel) and _settle(mu, y, i, P, sliding, Xt)
 
 
 @overload(pad_settle)
-def _pad_settle(mu, y, i, P, sliding, Xt, R):
-    return _settle.py_func if is_pad(mu) else (lambda mu, y, i, P, sliding, Xt, R: False)
+def _pad_settle(mu, y, i, P, sliding, Xt):
+    return _settle.py_func if is_pad(mu) else (lambda mu, y, i, P, sliding, Xt: False)
 
 
 @njit(cache=True)
-def _settle(mu, y, i, P, sliding, Xt, R):
+def _settle(mu, y, i, P, sliding, Xt):
     if sliding[i] != BAND:
         return False
-    fe = mv(R, Xt[i, 0], Xt[i, 1], Xt[i, 2])
+    fe = mv(quat_matrix(y[6:10]), Xt[i, 0], Xt[i, 1], Xt[i, 2])
     if not np.hypot(fe[0], fe[1]) < mu.mu_d * fe[2]:          # unloaded (touching down) it stays in the band
         return False
     o = NB + 4 * i

@@ -256,7 +256,6 @@ def _commit(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, ener
     change)."""
     Pt, slt, dt, ft, Xt, mt, rt = work
     cd, cf, cn, ck, cc, cy = cells
-    R = quat_matrix(y[6:10])
     _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt, mt, g, True)
     C = mem.shape[1]
     started = False
@@ -270,8 +269,8 @@ def _commit(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, ener
             P[i, c], shape[i, c] = Pt[i, c], mt[i, 2 + c]
         sliding[i] = slt[i]
         if mt[i, 0] < 0.0:          # eq. 33: a held footpad past mu_S slides (with mass: a band crossing missed)
-            started = pad_event(mu, y, i, P, sliding, Xt, R) or started
-        elif pad_settle(mu, y, i, P, sliding, Xt, R):
+            started = pad_event(mu, y, i, P, sliding, Xt) or started
+        elif pad_settle(mu, y, i, P, sliding, Xt):
             started = True
         for j in range(1 + geo[5][i]):
             m = cn[i, j]
@@ -640,7 +639,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
         if forced >= 2 * n:
             cell_event(cells, cev, forced, n)
         elif forced >= n:
-            changed = pad_event(mu, y, forced - n, P, sliding, Xt, quat_matrix(y[6:10]))
+            changed = pad_event(mu, y, forced - n, P, sliding, Xt)
         k = cnt[K_HIST]                                # record as committed (a switching leg: before it)
         if k > 0 and t <= H_t[k - 1]:
             k -= 1                                     # an event at the start of a step replaces its record

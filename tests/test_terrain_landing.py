@@ -12,6 +12,7 @@ from alightsize.common.resources import data_dir
 from alightsize.landings.random_landings import random_landing
 from alightsize.model.scene_config import read_scene
 from alightsize_sim.landing import simulate
+from alightsize_sim.landing_kernel import FACE_GAP
 from alightsize_sim.terrain import Box, Hemisphere, Step, Terrain, height, pack
 
 SCENES = data_dir("examples") / "affdl-tr-66-33" / "scenes"
@@ -108,8 +109,8 @@ def test_simulate_names_the_features_each_leg_met_and_draws_the_footprints(tmp_p
 @pytest.mark.parametrize("mass", [0.0, 2.26796])
 def test_a_footpad_swept_into_a_box_side_is_caught_on_the_face(mass):
     """Random landing 9 of the terrain sweep (configuration 1, mu_D 0.32, a 0.30 m box within the leg span): a
-    footpad swept sideways into the box's side is caught on the face, above the ground under it (gap
-    0.11 m measured), and held there; the landing runs to its outcome (it stalled and failed while footpads
+    footpad swept sideways into the box's side is caught on the face, more than FACE_GAP above the ground under
+    it (the step loop's definition of meeting a face; 0.11 m measured), and held there; the landing runs to its outcome (it stalled and failed while footpads
     were put on the box's top) with the energy audit closed below 1e-4, massless and with 5 lb footpads."""
     base = read_scene(SCENES / "telescoping_config1.toml")
     scene = dataclasses.replace(random_landing(base.scene, 20261121, 9, True), footpad_mass=mass)
@@ -117,4 +118,4 @@ def test_a_footpad_swept_into_a_box_side_is_caught_on_the_face(mass):
     assert res.status != "failed" and res.energy["closure_rel"] < 1e-4
     packed = pack(scene.terrain)
     gaps = [res.footpad[k, i, 2] - height(packed, *res.footpad[k, i, :2]) for k, i in zip(*np.nonzero(res.contact))]
-    assert max(gaps) > 0.05
+    assert max(gaps) > FACE_GAP

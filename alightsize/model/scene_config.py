@@ -41,11 +41,11 @@ class SceneConfig:
     cell_names: tuple[tuple[str, ...], ...]
 
 
-def _vector(node: Node, name: str, dim: str) -> np.ndarray:
+def _vector(node: Node, name: str, dim: str, count: int = 3, positive: bool = False) -> np.ndarray:
     values = node.raw(name)
-    if not isinstance(values, list) or len(values) != 3:
-        raise node.error(name, f"an array of three {dim} quantities", repr(values))
-    return np.array([node.parse_quantity(f"{name}[{i}]", v, dim, positive=False) for i, v in enumerate(values)])
+    if not isinstance(values, list) or len(values) != count:
+        raise node.error(name, f"an array of {('two', 'three')[count - 2]} {dim} quantities", repr(values))
+    return np.array([node.parse_quantity(f"{name}[{i}]", v, dim, positive=positive) for i, v in enumerate(values)])
 
 
 def rot(axis: int, angle: float) -> np.ndarray:
@@ -167,23 +167,15 @@ def _features(ter: Node, path: Path) -> Terrain:
     if f:
         f.allow(("file", "spacing", "origin", "note"))
         name = f.string("file")
-        spacing = [f.parse_quantity(f"spacing[{i}]", v, "length") for i, v in enumerate(_pair(f, "spacing"))]
-        origin = ([f.parse_quantity(f"origin[{i}]", v, "length", positive=False)
-                   for i, v in enumerate(_pair(f, "origin"))] if f.has("origin") else [0.0, 0.0])
+        spacing = _vector(f, "spacing", "length", 2, positive=True)
+        origin = _vector(f, "origin", "length", 2) if f.has("origin") else np.zeros(2)
         f.string("note", "")
         f.finish()
         try:
-            field = HeightField.from_file(path.parent / name, spacing[0], spacing[1], origin[0], origin[1])
+            field = HeightField.from_file(path.parent / name, *map(float, spacing), *map(float, origin))
         except (OSError, ValueError) as exc:
             raise f.error("file", "a .npy or .csv grid of finite heights (m), at least 2 x 2", str(exc)) from None
     return Terrain(tuple(steps), tuple(hemispheres), tuple(boxes), field)
-
-
-def _pair(node: Node, name: str) -> list:
-    values = node.raw(name)
-    if not isinstance(values, list) or len(values) != 2:
-        raise node.error(name, "an array of two lengths (x, y)", repr(values))
-    return values
 
 
 def _footpad_mass(node: Node) -> float:
