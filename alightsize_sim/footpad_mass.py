@@ -15,10 +15,22 @@ relative to the capsule (the leg's rate is computed with v - u); the capsule los
 (fe = R X, terrain axes), the footpad gains -fe . u and friction takes -G . u. The footpad's weight is not
 modelled: its mass only gives the slide inertia (the capsule's mass includes it).
 
+On soil (`PadModel.area` > 0; alightsize_sim.soil) a footpad also sinks along the terrain normal. Its sinkage s
+and rate w are state, with two modes located as events: HELD (w = 0: the soil carries the leg's push FE3 as
+long as it is below the bearing force R(s) = A p(s)) and SINKING (m w' = FE3 - R(s), from the moment FE3
+exceeds R(s) until w falls to zero; the soil is plastic and gives nothing back). In 1-D the velocity meets zero
+exactly, so no band is needed. The friction limit is then mu R(s) while it sinks, and a footpad sliding while
+sunk also plows: Rankine's passive resistance F_p(s) adds to the friction limit (static and dynamic). The
+capsule's extra power is + FE3 w; the soil takes R w and the plowing share of the slide's work. A footpad
+that touched down on a rock, or on a face, stays on rigid ground (mode RIGID). A footpad touches down at rest
+(its impact momentum goes with the capsule's mass, as on rigid ground).
+
 State: y[NB + 4i : NB + 4i + 4] = footpad i's (x, y, u_x, u_y) in terrain axes, y[NB + 4n] the friction work,
 y[NB + 4n + 1] the work the legs take beyond their cells' (an articulated leg's return spring and seat blend;
 zero for a telescoping leg), y[NB + 4n + 2 + C i + j] the work of cell j's damper (the step loop adds the exact
-rate-free work at each accepted step), so that the energy audit checks every term it reports.
+rate-free work at each accepted step), so that the energy audit checks every term it reports. On soil, the
+last 4n + 1 entries are per footpad (s, w, the surface height z0 where it touched, its mode), then the soil's
+work; a mode is a discrete flag with zero rate, so the Runge-Kutta carries it unchanged.
 """
 
 from __future__ import annotations
@@ -32,24 +44,62 @@ from numba.extending import overload
 from . import crush_cell
 from .legs import leg_force
 from .rigid_body import quat_matrix
+from .soil import normal_force, plowing_force, sinkage_depth, sinkage_work
+from .terrain import BOX, HEMISPHERE, features_at
 from .vec3 import mv
 
 NB = 14            # body states before the footpads'
 FACE, STICK, SLIDE, BAND = -1, 0, 1, 2   # FACE: held on a vertical face it met (any friction model)
 FLOOR = 1e-6       # N: in-plane force below this never starts a slide (round-off at zero load)
+SINK_BAND = 1e-6   # a sinking footpad whose speed turned negative stops only under a push this much below R(s)
 
-PadModel = namedtuple("PadModel", "mu_s mu_d mass band")
-"""Static and dynamic friction, footpad mass (kg) and Karnopp band (m/s)."""
+RIGID, HELD, SINKING = -1.0, 0.0, 1.0     # soil modes of a footpad on the ground
+
+PadModel = namedtuple("PadModel", "mu_s mu_d mass band soil area diameter")
+"""Static and dynamic friction, footpad mass (kg), Karnopp band (m/s), the soil (alightsize_sim.soil.Soil.packed
+as a tuple), the footpad's bearing area (m^2; 0: rigid ground, no soil) and diameter (m; round footpads)."""
+
+
+def pad_model(mu_s: float, mu_d: float, mass: float, band: float, soil=None, diameter: float = 0.0) -> PadModel:
+    """A PadModel of floats for round footpads of the given diameter; without a soil (None) the ground is rigid."""
+    packed = tuple(float(x) for x in soil.packed) if soil is not None else (0.0,) * 6
+    d = float(diameter) if soil is not None else 0.0
+    return PadModel(float(mu_s), float(mu_d), float(mass), float(band), packed, np.pi * d * d / 4.0, d)
 
 
 def is_pad(mu) -> bool:
     """Whether a numba type of the friction argument is a PadModel."""
-    return isinstance(mu, types.NamedUniTuple) and mu.instance_class is PadModel
+    return isinstance(mu, types.BaseNamedTuple) and mu.instance_class is PadModel
 
 
-def n_states(n: int, C: int) -> int:
-    """Length of the state vector with n footpads that have mass on legs of up to C cells."""
-    return NB + 4 * n + 2 + n * C
+def n_states(n: int, C: int, soil: bool = False) -> int:
+    """Length of the state vector with n footpads that have mass on legs of up to C cells (on soil or not)."""
+    return NB + 4 * n + 2 + n * C + (4 * n + 1 if soil else 0)
+
+
+@njit(cache=True, inline="always")
+def _sink_at(y, n, i):
+    """Index of footpad i's soil block (s, w, z0, mode) in y (on soil only); the soil's work is y[-1]."""
+    return len(y) - 4 * n - 1 + 4 * i
+
+
+@njit(cache=True)
+def _bearing(mu, s):
+    """R(s): the soil's bearing force on the round footpad at sinkage s (N); Bekker's b is its radius."""
+    return normal_force(mu.soil, mu.area, 0.5 * mu.diameter, s)
+
+
+@njit(cache=True)
+def _ground(mu, y, i, n, fe2):
+    """(normal force N the ground gives footpad i, plowing resistance F_p) under the leg's push fe2: N = fe2 on
+    rigid ground or held by the soil, R(s) while it sinks; F_p(s) while sunk."""
+    if mu.area > 0.0:
+        k = _sink_at(y, n, i)
+        if y[k + 3] != RIGID:
+            s = y[k]
+            normal = _bearing(mu, s) if y[k + 3] == SINKING else max(fe2, 0.0)
+            return normal, plowing_force(mu.soil, mu.diameter, s)
+    return max(fe2, 0.0), 0.0
 
 
 def integrates_dampers(mu):
@@ -65,33 +115,50 @@ def _integrates_dampers(mu):
 
 @njit(cache=True)
 def pad_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, frc, rte, X, y):
-    """Leg i's forces with its footpad at P0 (held) or where its state puts it (sliding); returns the same
-    tuple as footpad_slip.footpad_force: (mode, cells' power, alpha, beta, psi, event value, 0, 0). The event
-    value is the static margin mu_S FE3 + FLOOR - FE12 while it sticks, |u| - band while it slides and
-    band - |u| in the band."""
-    if sliding <= STICK:                                        # sticking, or held on a face (FACE)
-        P[0], P[1], P[2] = P0[0], P0[1], P0[2]
-        vr = (v[0], v[1], v[2])
-    else:
-        o = NB + 4 * i
-        P[0], P[1], P[2] = y[o], y[o + 1], P0[2]
-        vr = (v[0] - y[o + 2], v[1] - y[o + 3], v[2])
-    power, alpha, beta, psi = leg_force(geo, cells, i, mem, shape, P, r, R, vr, w, defl, frc, rte, X)
+    """Leg i's forces with its footpad at P0 (held) or where its state puts it (sliding, sunk); returns the
+    tuple of footpad_slip.contact_force: (mode, cells' power, alpha, beta, psi, slip event value, 0, 0, soil
+    event value). The slip event value is the static margin mu_S N + F_p + FLOOR - FE12 while it sticks,
+    |u| - band while it slides and band - |u| in the band; the soil's is R(s) + FLOOR - FE3 while held, w while
+    sinking (1 on rigid ground)."""
+    n = cells[2].shape[0]
+    o = NB + 4 * i
+    P[0], P[1], P[2] = P0[0], P0[1], P0[2]
+    u0 = u1 = u2 = 0.0
+    if sliding > STICK:
+        P[0], P[1], u0, u1 = y[o], y[o + 1], y[o + 2], y[o + 3]
+    if sliding != FACE and mu.area > 0.0:
+        k = _sink_at(y, n, i)
+        P[2], u2 = y[k + 2] - y[k], -y[k + 1]
+    power, alpha, beta, psi = leg_force(geo, cells, i, mem, shape, P, r, R, (v[0] - u0, v[1] - u1, v[2] - u2), w,
+                                        defl, frc, rte, X)
     if sliding == FACE:
-        g = 1.0
-    elif sliding == STICK:
-        fe = mv(R, X[0], X[1], X[2])
-        g = mu.mu_s * max(fe[2], 0.0) + FLOOR - np.sqrt(fe[0] * fe[0] + fe[1] * fe[1])    # eq. 33
+        return sliding, power, alpha, beta, psi, 1.0, 0.0, 0.0, 1.0
+    fe = mv(R, X[0], X[1], X[2])
+    normal, plow = _ground(mu, y, i, n, fe[2])
+    if sliding == STICK:
+        g = mu.mu_s * normal + plow + FLOOR - np.sqrt(fe[0] * fe[0] + fe[1] * fe[1])    # eq. 33
     else:
-        speed = np.hypot(y[NB + 4 * i + 2], y[NB + 4 * i + 3])
+        speed = np.hypot(u0, u1)
         g = speed - mu.band if sliding == SLIDE else mu.band - speed
-    return sliding, power, alpha, beta, psi, g, 0.0, 0.0
+    return sliding, power, alpha, beta, psi, g, 0.0, 0.0, _sink_event(mu, y, i, n, fe[2])
 
 
 @njit(cache=True)
-def _friction(mu, mode, fe0, fe1, fe2, u0, u1):
-    """Ground friction (G0, G1) on a moving footpad under the leg's force fe on the capsule (eq. 35-37)."""
-    limit = mu.mu_d * max(fe2, 0.0)
+def _sink_event(mu, y, i, n, fe2):
+    """Footpad i's soil event value: R(s) + FLOOR - FE3 while the soil holds it, w while it sinks, else 1."""
+    if mu.area > 0.0:
+        k = _sink_at(y, n, i)
+        if y[k + 3] == HELD:
+            return _bearing(mu, y[k]) + FLOOR - fe2
+        if y[k + 3] == SINKING:
+            return y[k + 1]
+    return 1.0
+
+
+@njit(cache=True)
+def _friction(mode, limit, fe0, fe1, u0, u1):
+    """Ground friction (G0, G1) on a moving footpad of dynamic limit `limit` (N) under the leg's force fe on the
+    capsule (eq. 35-37)."""
     if mode == SLIDE:
         s = np.hypot(u0, u1)
         return (-limit * u0 / s, -limit * u1 / s) if s > 0.0 else (0.0, 0.0)
@@ -121,55 +188,122 @@ def _pad_rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy
 def _rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy):
     n, C = len(contact), ft.shape[1]
     cd, cf, cn, ck, _, cy = cells
-    extra, lost, other = 0.0, 0.0, power
+    extra, lost, other, sunk = 0.0, 0.0, power, 0.0
     for i in range(n):
         o = NB + 4 * i
+        k = _sink_at(y, n, i) if mu.area > 0.0 else 0
+        if mu.area > 0.0:
+            dy[k] = dy[k + 1] = dy[k + 2] = dy[k + 3] = 0.0
         for j in range(C):
-            k = NB + 4 * n + 2 + C * i + j
-            dy[k] = 0.0
+            d = NB + 4 * n + 2 + C * i + j
+            dy[d] = 0.0
             if contact[i] and cn[i, j] > 0:
                 m = cn[i, j]
                 static = crush_cell.force(cd[i, j, :m], cf[i, j, :m], ck[i, j], 0.0, cy[i, j], mem[i, j, 0],
                                           mem[i, j, 1], dt[i, j], 0.0)
-                dy[k] = (ft[i, j] - static) * rt[i, j]
+                dy[d] = (ft[i, j] - static) * rt[i, j]
                 other -= ft[i, j] * rt[i, j]
-        if contact[i] and sliding[i] > STICK:
-            fe = mv(R, Xt[i, 0], Xt[i, 1], Xt[i, 2])
+        dy[o] = dy[o + 1] = dy[o + 2] = dy[o + 3] = 0.0
+        if not contact[i] or sliding[i] == FACE:
+            continue
+        fe = mv(R, Xt[i, 0], Xt[i, 1], Xt[i, 2])
+        normal, plow = _ground(mu, y, i, n, fe[2])
+        if mu.area > 0.0 and y[k + 3] == SINKING:
+            wk = y[k + 1]
+            dy[k], dy[k + 1] = wk, (fe[2] - normal) / mu.mass
+            sunk += normal * wk
+            extra += fe[2] * wk
+        if sliding[i] > STICK:
             u0, u1 = y[o + 2], y[o + 3]
-            g0, g1 = _friction(mu, sliding[i], fe[0], fe[1], fe[2], u0, u1)
+            limit = mu.mu_d * normal + plow
+            g0, g1 = _friction(sliding[i], limit, fe[0], fe[1], u0, u1)
             dy[o], dy[o + 1] = u0, u1
             dy[o + 2], dy[o + 3] = (g0 - fe[0]) / mu.mass, (g1 - fe[1]) / mu.mass
             extra -= fe[0] * u0 + fe[1] * u1
-            lost -= g0 * u0 + g1 * u1
-        else:
-            dy[o] = dy[o + 1] = dy[o + 2] = dy[o + 3] = 0.0
+            share = plow / limit if limit > 0.0 else 0.0          # the plowing part of the slide's resistance
+            lost -= (1.0 - share) * (g0 * u0 + g1 * u1)
+            sunk -= share * (g0 * u0 + g1 * u1)
     dy[NB + 4 * n], dy[NB + 4 * n + 1] = lost, other
+    if mu.area > 0.0:
+        dy[len(y) - 1] = sunk
     return extra
 
 
-def pad_switch(mu, y, i, P, sliding, down):
-    """A leg touching down (down) or lifting off: its footpad starts at rest where it touched, in the band; one
-    lifting off drops its velocity (its kinetic energy counts as friction). A no-op without footpad mass."""
+def pad_switch(mu, y, i, P, sliding, down, Xt, R, terrain):
+    """A leg touching down (down) or lifting off: its footpad starts at rest where it touched (a held face
+    excepted, in the band), on the soil unless on a rock or a face; back in the hole it left it bears on the
+    soil there as that soil was left (plastic: held until the push passes R(s)). One lifting off drops its
+    velocity in the plane (its kinetic energy counts as friction) and leaves its hole; one that was sinking (the
+    leg unloaded as the footpad ran ahead into the soil) first sinks on to the depth at which the soil has taken
+    its kinetic energy (soil.sinkage_depth), as the soil alone then stops it (its weight is not modelled). Xt
+    is the leg's force just computed with the footpad at P. A no-op without footpad mass."""
     if isinstance(mu, PadModel):
-        _switch(mu, y, i, P, sliding, down)
+        _switch(mu, y, i, P, sliding, down, Xt, R, terrain)
 
 
 @overload(pad_switch)
-def _pad_switch(mu, y, i, P, sliding, down):
-    return _switch if is_pad(mu) else (lambda mu, y, i, P, sliding, down: None)
+def _pad_switch(mu, y, i, P, sliding, down, Xt, R, terrain):
+    return _switch if is_pad(mu) else (lambda mu, y, i, P, sliding, down, Xt, R, terrain: None)
 
 
-def _switch(mu, y, i, P, sliding, down):
-    o = NB + 4 * i
-    _stop(mu, y, i, len(sliding))
+def _switch(mu, y, i, P, sliding, down, Xt, R, terrain):
+    o, n = NB + 4 * i, len(sliding)
+    _stop(mu, y, i, n)
+    if mu.area > 0.0:
+        _soil_switch(mu, y, i, n, P, sliding[i] == FACE, down, Xt, R, terrain)
     if down:
         y[o], y[o + 1] = P[i, 0], P[i, 1]
-        sliding[i] = BAND
+        if sliding[i] != FACE:
+            sliding[i] = BAND
+
+
+@njit(cache=True)
+def _soil_switch(mu, y, i, n, P, face, down, Xt, R, terrain):
+    """pad_switch's part on soil, before the footpad's position is set (it still marks its hole)."""
+    k = _sink_at(y, n, i)
+    if y[k + 3] == SINKING and y[k + 1] > 0.0:          # left sinking: the soil stops it where it takes its energy
+        e = 0.5 * mu.mass * y[k + 1] ** 2
+        b = 0.5 * mu.diameter
+        y[k] = sinkage_depth(mu.soil, mu.area, b, sinkage_work(mu.soil, mu.area, b, y[k]) + e)
+        y[len(y) - 1] += e
+    y[k + 1] = 0.0
+    y[k + 3] = RIGID
+    if not down:
+        return
+    kind = features_at(terrain, P[i, 0], P[i, 1])[0]
+    if face or kind == HEMISPHERE or kind == BOX:                      # rocks and faces are rigid
+        y[k], y[k + 2] = 0.0, P[i, 2]
+        return
+    if _hole(mu, y, i, n, P[i, 0], P[i, 1], np.inf) == np.inf:
+        y[k], y[k + 2] = 0.0, P[i, 2]                               # fresh ground, not its hole
+    fe = mv(R, Xt[i, 0], Xt[i, 1], Xt[i, 2])
+    y[k + 3] = SINKING if fe[2] > _bearing(mu, y[k]) + FLOOR else HELD
+
+
+def pad_ground(mu, y, i, n, x, yy, top):
+    """Height of the ground under leg i's free footpad (of n) at (x, yy): the surface's, `top`, or on soil the
+    bottom of the hole the footpad left when its centre is over it."""
+    return _hole(mu, y, i, n, x, yy, top) if isinstance(mu, PadModel) else top
+
+
+@overload(pad_ground)
+def _pad_ground(mu, y, i, n, x, yy, top):
+    return _hole.py_func if is_pad(mu) else (lambda mu, y, i, n, x, yy, top: top)
+
+
+@njit(cache=True)
+def _hole(mu, y, i, n, x, yy, top):
+    """min(top, the bottom of footpad i's hole) when (x, yy) is within its radius of the hole's centre."""
+    if mu.area > 0.0:
+        k, o = _sink_at(y, n, i), NB + 4 * i
+        if y[k] > 0.0 and (x - y[o]) ** 2 + (yy - y[o + 1]) ** 2 < 0.25 * mu.diameter ** 2:
+            return min(top, y[k + 2] - y[k])
+    return top
 
 
 @njit(cache=True)
 def _stop(mu, y, i, n):
-    """Footpad i brought to rest, its kinetic energy added to the friction work."""
+    """Footpad i brought to rest in the plane, its kinetic energy there added to the friction work."""
     o = NB + 4 * i
     y[NB + 4 * n] += 0.5 * mu.mass * (y[o + 2] ** 2 + y[o + 3] ** 2)
     y[o + 2] = y[o + 3] = 0.0
@@ -204,10 +338,36 @@ def _event(mu, y, i, P, sliding, Xt):
     return True
 
 
+def sink_event(mu, y, i, sliding):
+    """A soil event of leg i (returns True): a held footpad starts to sink; a sinking one stops (its kinetic
+    energy, from a speed within the event tolerance of zero, goes to the soil). Never without soil."""
+    return isinstance(mu, PadModel) and _sink(mu, y, i, len(sliding))
+
+
+@overload(sink_event)
+def _sink_event_overload(mu, y, i, sliding):
+    return (lambda mu, y, i, sliding: _sink(mu, y, i, len(sliding))) if is_pad(mu) else \
+        (lambda mu, y, i, sliding: False)
+
+
+@njit(cache=True)
+def _sink(mu, y, i, n):
+    k = _sink_at(y, n, i)
+    if y[k + 3] == HELD:
+        y[k + 3] = SINKING
+    elif y[k + 3] == SINKING:
+        y[len(y) - 1] += 0.5 * mu.mass * y[k + 1] ** 2
+        y[k + 1] = 0.0
+        y[k + 3] = HELD
+    return True
+
+
 def pad_settle(mu, y, i, P, sliding, Xt):
     """After an accepted step: a banded footpad whose push is below the dynamic limit sticks where it is
-    (returns whether it did): a footpad touching down slides on mu_D like the massless one (eq. 33). A no-op
-    without footpad mass."""
+    (returns whether it did): a footpad touching down slides on mu_D like the massless one (eq. 33). On soil,
+    a mode its event missed is caught up: a held footpad pushed past R(s) sinks, a sinking one at w < 0 stops
+    once its push is below R(s) by SINK_BAND (one that has just started, located to within event_tol before
+    its push reached R(s), may turn back for a moment). A no-op without footpad mass."""
     return isinstance(mu, PadModel) and _settle(mu, y, i, P, sliding, Xt)
 
 
@@ -218,13 +378,22 @@ def _pad_settle(mu, y, i, P, sliding, Xt):
 
 @njit(cache=True)
 def _settle(mu, y, i, P, sliding, Xt):
-    if sliding[i] != BAND:
-        return False
+    n = len(sliding)
     fe = mv(quat_matrix(y[6:10]), Xt[i, 0], Xt[i, 1], Xt[i, 2])
-    if not np.hypot(fe[0], fe[1]) < mu.mu_d * fe[2]:          # unloaded (touching down) it stays in the band
-        return False
+    changed = False
+    if mu.area > 0.0 and sliding[i] != FACE:
+        k = _sink_at(y, n, i)
+        bearing = _bearing(mu, y[k])
+        if (y[k + 3] == HELD and fe[2] > bearing + FLOOR) or \
+                (y[k + 3] == SINKING and y[k + 1] < 0.0 and fe[2] < (1.0 - SINK_BAND) * bearing - FLOOR):
+            changed = _sink(mu, y, i, n)
+    if sliding[i] != BAND:
+        return changed
+    normal, plow = _ground(mu, y, i, n, fe[2])
+    if not np.hypot(fe[0], fe[1]) < mu.mu_d * normal + plow or fe[2] <= 0.0:   # unloaded (touching down): in the band
+        return changed
     o = NB + 4 * i
-    _stop(mu, y, i, len(sliding))
+    _stop(mu, y, i, n)
     P[i, 0], P[i, 1] = y[o], y[o + 1]                     # its height as the step loop last placed it
     sliding[i] = STICK
     return True

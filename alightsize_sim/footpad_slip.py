@@ -68,7 +68,7 @@ def _slip_events(mu):
 def contact_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, frc, rte, X, y):
     """footpad_force under friction mu = (mu_S, mu_D, the slide's relative tolerance), with mu None the leg's
     forces with its footpad held at P0 (no slip search), with a footpad_mass.PadModel the footpad where its
-    state y puts it (footpad_mass.pad_force); the same returns."""
+    state y puts it (footpad_mass.pad_force); footpad_force's returns and the soil event value (1 but on soil)."""
     return (_held if mu is None else _slipping)(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl,
                                                 frc, rte, X, y)
 
@@ -83,12 +83,13 @@ def _contact_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, de
 def _held(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, frc, rte, X, y):
     P[0], P[1], P[2] = P0[0], P0[1], P0[2]
     power, alpha, beta, psi = leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
-    return 0, power, alpha, beta, psi, 1.0, 0.0, 0.0
+    return 0, power, alpha, beta, psi, 1.0, 0.0, 0.0, 1.0
 
 
 def _slipping(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, frc, rte, X, y):
-    return footpad_force(geo, cells, i, mem, shape, P0, sliding, slip_events(mu), mu[0], mu[1], r, R, v, w, P,
-                         defl, frc, rte, X, mu[2])
+    sl, power, alpha, beta, psi, margin, deficit, path = footpad_force(
+        geo, cells, i, mem, shape, P0, sliding, slip_events(mu), mu[0], mu[1], r, R, v, w, P, defl, frc, rte, X, mu[2])
+    return sl, power, alpha, beta, psi, margin, deficit, path, 1.0
 
 
 @njit(cache=True, inline="always")

@@ -17,7 +17,8 @@ from . import landing_kernel as lk
 from .rigid_body import quat_matrix
 from .stability import quiescence_momenta
 from .articulated_leg import ArticulatedLeg
-from .footpad_mass import NB, PadModel, n_states
+from .footpad_mass import NB, PadModel, n_states, pad_model
+from .soil import Soil
 from .legs import free_footpad, initial_shape, pack
 from .terrain import Terrain, clearance
 from .terrain import pack as pack_terrain
@@ -32,8 +33,10 @@ class Scene:
     initial velocity (terrain), attitude quaternion (principal -> terrain) and body rates (principal axes),
     static and dynamic friction, the capsule's up axis and body points (principal axes, from the CG) that
     must stay clear of the terrain, the mass of each footpad (kg; 0: massless footpads that slide by a root
-    search, the report's model), the Karnopp velocity band of footpads with mass (m/s; footpad_mass) and the
-    terrain's features on the plane (terrain axes, from the capsule's first-contact CG; alightsize_sim.terrain)."""
+    search, the report's model), the Karnopp velocity band of footpads with mass (m/s; footpad_mass), the
+    terrain's features on the plane (terrain axes, from the capsule's first-contact CG; alightsize_sim.terrain),
+    the soil on it (None: rigid ground; needs footpads with mass) and the footpads' diameter (m; round
+    footpads bearing on the soil)."""
 
     mass: float
     inertia: np.ndarray
@@ -49,6 +52,13 @@ class Scene:
     footpad_mass: float = 0.0
     footpad_band: float = 1e-3
     terrain: Terrain = field(default_factory=Terrain)
+    soil: Soil | None = None
+    footpad_diameter: float = 0.0
+
+    def __post_init__(self):
+        if self.soil is not None and not (self.footpad_mass > 0.0 and self.footpad_diameter > 0.0):
+            raise ValueError("a scene on soil needs footpads with mass and a diameter (footpad_mass, "
+                             "footpad_diameter > 0)")
 
 
 @dataclass(frozen=True)
@@ -144,14 +154,16 @@ class _Run:
             for j, cell in enumerate(leg.cells):
                 self.bottoming[i, j] = cell.curve.bottoming
         # The slide's tolerance follows the integration's: 1e-3 rtol, within 1e-13..1e-8 (docs/simulator.md).
-        if holds(scene):
+        # Footpads on soil sink whatever the friction: they need the footpad-mass model.
+        if holds(scene) and scene.soil is None:
             self.mu = None
         elif scene.footpad_mass > 0.0:
-            self.mu = PadModel(float(scene.mu_static), float(scene.mu_dynamic), float(scene.footpad_mass),
-                               float(scene.footpad_band))
+            self.mu = pad_model(scene.mu_static, scene.mu_dynamic, scene.footpad_mass, scene.footpad_band,
+                                scene.soil, scene.footpad_diameter)
         else:
             self.mu = np.array([scene.mu_static, scene.mu_dynamic, min(max(1e-3 * ctl.rtol, 1e-13), 1e-8)])
-        self.ny = n_states(n, C) if isinstance(self.mu, PadModel) else NB
+        self.soil = scene.soil is not None
+        self.ny = n_states(n, C, self.soil) if isinstance(self.mu, PadModel) else NB
         self.mem = np.zeros((n, C, 2))
         self.contact = np.zeros(n, np.int64)
         self.P = np.zeros((n, 3))
@@ -262,14 +274,19 @@ def simulate(scene: Scene, ctl: Controls) -> Result:
                                                      run.last[i, j])
     cell = run.energy.copy()
     n = run.n
-    pads = np.zeros((k, n, 4))
-    pad_kinetic = other = 0.0
+    velocity = np.zeros((k, n, 3))
+    pad_kinetic = other = soil = 0.0
     if run.ny > NB:
         # Footpads with mass: the dampers' work, the footpads' friction work and the legs' work beyond their
-        # cells (return springs, seat) are integrated with the state; the footpads keep their kinetic energy.
-        cell += Y[-1, NB + 4 * n + 2:].reshape(n, run.C)
-        pads = Y[:, NB:NB + 4 * n].reshape(k, n, 4)
-        pad_kinetic = 0.5 * scene.footpad_mass * float(np.sum(pads[-1, :, 2:] ** 2))
+        # cells (return springs, seat) are integrated with the state, and on soil the soil's work; the
+        # footpads keep their kinetic energy.
+        base = NB + 4 * n + 2
+        cell += Y[-1, base:base + n * run.C].reshape(n, run.C)
+        velocity[:, :, :2] = Y[:, NB:NB + 4 * n].reshape(k, n, 4)[:, :, 2:]
+        if run.soil:
+            velocity[:, :, 2] = -Y[:, base + n * run.C:-1].reshape(k, n, 4)[:, :, 1]
+            soil = float(Y[-1, -1])
+        pad_kinetic = 0.5 * scene.footpad_mass * float(np.sum(velocity[-1] ** 2))
         friction, other = float(Y[-1, NB + 4 * n]), float(Y[-1, NB + 4 * n + 1])
     else:
         # The massless legs pass on all the work they take from the capsule (integrated with the state): what
@@ -277,15 +294,13 @@ def simulate(scene: Scene, ctl: Controls) -> Result:
         friction = float(Y[-1, 13]) - float(cell.sum())
     absorbed = float(cell.sum()) - elastic
     denom = ke0 + max(released, 0.0)
-    out = absorbed + elastic + friction + pad_kinetic + other + ke1
+    out = absorbed + elastic + friction + pad_kinetic + other + soil + ke1
     closure = abs(ke0 + released - out) / denom if denom > 0 else 0.0
     en = {"initial_J": ke0, "potential_change_J": released, "absorbed_J": absorbed, "elastic_J": elastic,
           "friction_J": friction, "kinetic_end_J": ke1, "closure_rel": float(closure), "leg_work_J": float(Y[-1, 13]),
-          "footpad_kinetic_J": pad_kinetic, "leg_other_J": other}
+          "footpad_kinetic_J": pad_kinetic, "leg_other_J": other, "soil_J": soil}
     rs = run.run_state
     bottomed = (float(rs[lk.S_BOT_T]), int(rs[lk.S_BOT_LEG]), int(rs[lk.S_BOT_CELL])) if rs[lk.S_BOT_T] >= 0 else None
-    velocity = np.zeros((k, n, 3))
-    velocity[:, :, :2] = pads[:, :, 2:]
     res = Result(run.H_t[:k].copy(), Y[:, :NB], run.H_dy[:k, :NB].copy(), run.H_d[:k].copy(), run.H_f[:k].copy(),
                  run.H_X[:k].copy(), run.H_P[:k].copy(), velocity, run.H_c[:k].copy(), STATUS[status], bottomed,
                  int(rs[lk.S_STRUCK]) if status == lk.MEMBER else None, cell,

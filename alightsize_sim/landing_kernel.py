@@ -18,7 +18,8 @@ import numpy as np
 from numba import njit
 
 from . import crush_cell
-from .footpad_mass import FACE, FLOOR, integrates_dampers, pad_event, pad_rates, pad_settle, pad_switch
+from .footpad_mass import (FACE, FLOOR, integrates_dampers, pad_event, pad_ground, pad_rates, pad_settle, pad_switch,
+                           sink_event)
 from .footpad_slip import contact_force, slip_events
 from .rigid_body import free_flight, quat_matrix, quat_rate
 from .stability import hanging_margin, quiescence_momenta, quiescence_update, stable_by_energy, tipping_margins
@@ -43,8 +44,9 @@ C_TFINAL, C_RTOL, C_ATOL, C_FIXED, C_MAXSTEP, C_EVENTTOL, C_STOPBOTTOM, C_TIPCOS
     C_QUIET_FRAC, C_TAUS, C_PERIOD, C_ENERGY_T = range(14)
 # Counters (int array).
 K_STEPS, K_REJECTED, K_RHS, K_HIST, K_EVENTS, K_TRIALS = range(6)
-# Leg state columns of the work array mt: static margin, reach deficit, alpha, beta, psi, footpad path error.
-N_MT = 6
+# Leg state columns of the work array mt: static margin, reach deficit, alpha, beta, psi, footpad path error, soil
+# event value.
+N_MT = 7
 # Run scalars (float array): step size, quiescence clock, reference momentum, first bottoming (t, leg, cell), the
 # leg whose intermediate member struck the terrain, since when a capsule with a leg in the air has held stable.
 S_H, S_QUIET, S_MOMENTUM, S_BOT_T, S_BOT_LEG, S_BOT_CELL, S_STRUCK, S_HANG = range(8)
@@ -83,7 +85,7 @@ def new_work(n, C):
 @njit(cache=True)
 def n_events(n, C):
     """Number of event functions for n legs of up to C cells (see _events)."""
-    return (2 + 2 * C) * n
+    return (3 + 2 * C) * n
 
 
 @njit(cache=True)
@@ -110,10 +112,10 @@ def _next_corner(cells, i, j, x, k):
 
 @njit(cache=True)
 def cell_event(cells, cev, which, n):
-    """A located cell event `which` (index into the event functions, >= 2n): a turn stops watching the cell; a
+    """A located cell event `which` (index into the event functions, >= 3n): a turn stops watching the cell; a
     corner moves the cell on to the curve's next corner."""
     C = cev.shape[1]
-    c = which - 2 * n
+    c = which - 3 * n
     if c < n * C:
         cev[c // C, c % C, 0] = 0
     else:
@@ -124,14 +126,15 @@ def cell_event(cells, cev, which, n):
 
 @njit(cache=True)
 def _legs(geo, cells, mu, mem, contact, P, sliding, shape, y, Pt, slt, dt, ft, Xt, mt, rt, R):
-    """Footpad, slip state, forces and mt = (static margin, reach deficit, alpha, beta, psi, footpad path error)
+    """Footpad, slip state, forces and mt = (static margin, reach deficit, alpha, beta, psi, footpad path error,
+    soil event value)
     of every leg at state y (mu = mu_S, mu_D, the slide's relative tolerance; None: footpads held; a
     footpad_mass.PadModel: footpads with mass, placed by y); returns the cells' power."""
     r, v, w = y[0:3], (y[3], y[4], y[5]), y[10:13]
     power = 0.0
     for i in range(len(contact)):
         if contact[i]:
-            sl, pw, mt[i, 2], mt[i, 3], mt[i, 4], mt[i, 0], mt[i, 1], mt[i, 5] = contact_force(
+            sl, pw, mt[i, 2], mt[i, 3], mt[i, 4], mt[i, 0], mt[i, 1], mt[i, 5], mt[i, 6] = contact_force(
                 geo, cells, i, mem[i], shape[i], P[i], sliding[i], mu, r, R, v, w, Pt[i], dt[i], ft[i], rt[i], Xt[i], y)
             slt[i] = sl
             power += pw
@@ -166,15 +169,18 @@ def rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape,
 
 @njit(cache=True)
 def _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt, mt, g, raw):
-    """Event functions g ((2 + 2C) n); an event is a crossing of zero from above. g[i]: leg i's free footpad height
+    """Event functions g ((3 + 2C) n); an event is a crossing of zero from above. g[i]: leg i's free footpad height
     (in the air) or main-cell compression beyond its set less the reach deficit (on the ground, from the leg
     state dt, mt already computed at y); an unarmed leg's threshold sits BAND past zero, so a footpad
     grazing the terrain stays put at zero force until it clearly leaves instead of switching every step.
     Not so for a footpad slid to the edge of its reach (deficit > 0): it still carries force, beyond the
     friction cone, so it leaves at once.
     g[n + i]: a sticking footpad's static margin mu_S FE3 + FLOOR - FE12 (N) when stick-to-slip is an event (for
-    footpads with mass, a sliding one's distance from its Karnopp band, m/s), else the constant 1. g[2n + C i + j]: the deflection rate of cell j of leg i while its turn is watched (cell_events);
-    g[(2 + C) n + C i + j]: its next loading-curve corner less its deflection (on the ground; else 1).
+    footpads with mass, a sliding one's distance from its Karnopp band, m/s), else the constant 1. g[2n + i]: a
+    footpad's soil event (footpad_mass: R(s) + FLOOR - FE3 while the soil holds it, its sinking rate while it
+    sinks), else 1. g[3n + C i + j]: the deflection rate of cell j of leg i while its turn is watched
+    (cell_events); g[(3 + C) n + C i + j]: its next loading-curve corner less its deflection (on the ground;
+    else 1).
     Locating these keeps every step's forces smooth: the largest stroke, which sets the unloading branch and the
     bottoming margin, is then found to event_tol, not sampled at step points."""
     n, C = len(contact), mem.shape[1]
@@ -185,15 +191,16 @@ def _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt,
             g[i] = dt[i, 0] - main_set(cells, i, mem[i]) - mt[i, 1]
         else:
             foot = free_footpad(geo, cells, i, mem[i], shape[i], y[0:3], R)
-            g[i] = clearance(geo[9], foot[0], foot[1], foot[2])
+            g[i] = foot[2] - pad_ground(mu, y, i, n, foot[0], foot[1], height(geo[9], foot[0], foot[1]))
         if not (raw or armed[i] > 0 or (contact[i] and mt[i, 1] > 0.0)):
             g[i] += BAND
         g[n + i] = mt[i, 0] if located and contact[i] else 1.0
+        g[2 * n + i] = mt[i, 6] if contact[i] else 1.0
         for j in range(C):
             c = C * i + j
-            g[2 * n + c] = rt[i, j] if contact[i] and cev[i, j, 0] else 1.0
+            g[3 * n + c] = rt[i, j] if contact[i] and cev[i, j, 0] else 1.0
             k = cev[i, j, 1]
-            g[(2 + C) * n + c] = cells[0][i, j, k] - dt[i, j] if contact[i] and k < cells[2][i, j] else 1.0
+            g[(3 + C) * n + c] = cells[0][i, j, k] - dt[i, j] if contact[i] and k < cells[2][i, j] else 1.0
 
 
 @njit(cache=True)
@@ -306,23 +313,22 @@ def switch(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, which, las
         _, alpha, beta, psi = leg_force(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R, v,
                                         y[10:13], dt[which], ft[which], rt[which], Xt[which])
         contact[which] = 0
-        pad_switch(mu, y, which, P, sliding, False)
+        pad_switch(mu, y, which, P, sliding, False, Xt, R, geo[9])
         shape[which, 0], shape[which, 1], shape[which, 2] = lift_shape(geo, cells, which, mem[which], alpha, beta, psi,
                                                                        dt[which, 0], y[0:3], R)
         last[which, 2 * C] = 0.0
     else:
         pad = free_footpad(geo, cells, which, mem[which], shape[which], y[0:3], R)
-        top = height(geo[9], pad[0], pad[1])
+        top = pad_ground(mu, y, which, len(contact), pad[0], pad[1], height(geo[9], pad[0], pad[1]))
         # A footpad touching down on the surface sits on it; one whose clearance jumped (swept into a step's
         # riser or a box's side) is caught on that face where it is and held there until it lifts off.
         on_face = pad[2] - top > FACE_GAP
         P[which, 0], P[which, 1], P[which, 2] = pad[0], pad[1], pad[2] if on_face else top
-        contact[which], sliding[which] = 1, 1                   # (re)contact slides on mu_D (eq. 33)
-        pad_switch(mu, y, which, P, sliding, True)
-        if on_face:
-            sliding[which] = FACE
+        contact[which] = 1
+        sliding[which] = FACE if on_face else 1                 # (re)contact slides on mu_D (eq. 33)
         leg_force(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R, v, y[10:13], dt[which],
                   ft[which], rt[which], Xt[which])
+        pad_switch(mu, y, which, P, sliding, True, Xt, R, geo[9])
         for j in range(C):
             last[which, j], last[which, C + j] = dt[which, j], 0.0
         last[which, 2 * C] = 1.0
@@ -636,8 +642,10 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
             y[c] /= qn
         cnt[K_STEPS] += 1
         changed = _commit(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, energy, last, work, g1)
-        if forced >= 2 * n:
+        if forced >= 3 * n:
             cell_event(cells, cev, forced, n)
+        elif forced >= 2 * n:
+            changed = sink_event(mu, y, forced - 2 * n, sliding)
         elif forced >= n:
             changed = pad_event(mu, y, forced - n, P, sliding, Xt)
         k = cnt[K_HIST]                                # record as committed (a switching leg: before it)

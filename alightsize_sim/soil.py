@@ -5,29 +5,21 @@ Ground Vehicles, Ch. 2), b the least width of the pad. A soil of constant bearin
 is the case n = 0, k_c = 0, k_phi = p0 (`Soil.rigid_plastic`). Plowing is the Rankine passive earth pressure
 on a vertical blade of width b sunk to z, which is Bekker's bulldozing resistance.
 
-The numeric kernels are numba-compiled and take the soil packed as a float array (`Soil.packed`, indices
-N, KC, KPHI, C, PHI, GAMMA below) so compiled code can call them. Presets live in materials/soils/, one file
-per soil, values with units as docs/soil.md describes.
+The numeric kernels are numba-compiled and take the soil packed as floats (`Soil.packed`, an array or a tuple;
+indices N, KC, KPHI, C, PHI, GAMMA below) so compiled code can call them. Soil files and the shipped presets
+(materials/soils/) are read by alightsize.model.soils.
 """
 
 from __future__ import annotations
 
 import math
-import tomllib
 from dataclasses import dataclass, field
-from pathlib import Path
 
 import numpy as np
 from numba import njit
 
 N, KC, KPHI, C, PHI, GAMMA = range(6)   # positions in Soil.packed
 
-_HERE = Path(__file__).resolve().parent
-_PRESET_DIRS = (_HERE.parent / "alightsize" / "_data" / "materials" / "soils",   # installed wheel
-                _HERE.parent / "materials" / "soils")                           # checkout
-
-_UNITS = {"k_c": "N/m^(n+1)", "k_phi": "N/m^(n+2)", "c": "Pa", "gamma": "N/m^3"}   # SI base unit of each key
-_PREFIX = {"": 1.0, "k": 1e3, "M": 1e6}
 
 
 @dataclass(frozen=True)
@@ -69,8 +61,9 @@ def sinkage_modulus(soil: np.ndarray, b: float) -> float:
 
 @njit(cache=True)
 def pressure(soil: np.ndarray, b: float, z: float) -> float:
-    """Pressure under a flat pad of least width b at sinkage z (Pa); none above the surface."""
-    if z <= 0.0:
+    """Pressure under a flat pad of least width b at sinkage z (Pa); none above the surface, and at it the limit
+    from within (p0 for a constant bearing pressure, n = 0; zero for n > 0)."""
+    if z < 0.0:
         return 0.0
     return sinkage_modulus(soil, b) * z ** soil[N]   # Bekker 1969; Wong, Theory of Ground Vehicles, Ch. 2
 
@@ -113,43 +106,3 @@ def plowing_force(soil: np.ndarray, b: float, z: float) -> float:
         return 0.0
     n_phi = flow_value(soil[PHI])
     return b * (0.5 * soil[GAMMA] * z * z * n_phi + 2.0 * soil[C] * z * math.sqrt(n_phi))   # Bekker 1956
-
-
-def _quantity(path: Path, key: str, text) -> float:
-    """A value as the file states it, "NUMBER UNIT" with the key's SI unit, optionally prefixed k or M."""
-    try:
-        number, unit = str(text).split(maxsplit=1)
-        value = float(number)
-    except ValueError:
-        raise ValueError(f"{path}: {key} should read like \"1.4 k{_UNITS[key]}\", not {text!r}") from None
-    prefix = unit[: len(unit) - len(_UNITS[key])]
-    if not unit.endswith(_UNITS[key]) or prefix not in _PREFIX:
-        raise ValueError(f"{path}: {key} is in {_UNITS[key]} (prefix k or M allowed), not {unit!r}")
-    return value * _PREFIX[prefix]
-
-
-def _angle(path: Path, text) -> float:
-    number, _, unit = str(text).partition(" ")
-    if unit != "deg":
-        raise ValueError(f"{path}: phi should read like \"35 deg\", not {text!r}")
-    return math.radians(float(number))
-
-
-def read_soil(path: str | Path) -> Soil:
-    """One soil file: name, n, k_c, k_phi, c, phi, gamma with their units, and a [source] table."""
-    path = Path(path)
-    data = tomllib.loads(path.read_text())
-    keys = {"name", "n", "k_c", "k_phi", "c", "phi", "gamma"}
-    if keys - set(data) or set(data) - keys - {"source"}:
-        raise ValueError(f"{path}: needs the keys {sorted(keys)} and an optional [source], has {sorted(data)}")
-    return Soil(float(data["n"]), *(_quantity(path, k, data[k]) for k in ("k_c", "k_phi", "c")),
-                _angle(path, data["phi"]), _quantity(path, "gamma", data["gamma"]), data["name"],
-                dict(data.get("source", {})))
-
-
-def soil_presets() -> dict[str, Soil]:
-    """The shipped soils, keyed by file stem (materials/soils/*.toml)."""
-    folder = next((p for p in _PRESET_DIRS if p.is_dir()), None)
-    if folder is None:
-        raise FileNotFoundError(f"no soils folder at {' or '.join(map(str, _PRESET_DIRS))}")
-    return {p.stem: read_soil(p) for p in sorted(folder.glob("*.toml"))}

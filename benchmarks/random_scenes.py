@@ -2,9 +2,10 @@
 (alightsize.landings.random_landings), each run to its outcome or t_final, on a process pool.
 
 Reports the outcome counts, failures (must be none), the worst energy closure, and the wall time per landing
-and per simulated second. With --terrain each landing has one random step or rock within the leg span.
+and per simulated second. With --terrain each landing has one random step or rock within the leg span; with
+--soil NAME (a shipped soil; needs --footpad-mass) the ground is that soil, under nominal 0.5 m footpads.
 Usage: python benchmarks/random_scenes.py [-n 1000] [--t-final 1.0] [--workers 2] [--terrain] [--footpad-mass KG]
-[--json FILE]
+[--soil NAME] [--json FILE]
 """
 
 from __future__ import annotations
@@ -23,15 +24,18 @@ import numpy as np
 
 from alightsize.landings.random_landings import random_landing
 from alightsize.model.scene_config import read_scene
+from alightsize.model.soils import soil_presets
 from alightsize_sim.landing import simulate
 
 BASE = Path(__file__).resolve().parent.parent / "examples" / "affdl-tr-66-33" / "scenes" / "telescoping_config1.toml"
 SEED = 20261121
+PAD_DIAMETER = 0.5                  # m: a nominal footpad (the report gives none for configuration 1)
 
 
-def one(k: int, t_final: float, features: bool = False, footpad_mass: float = 0.0) -> dict:
+def one(k: int, t_final: float, features: bool = False, footpad_mass: float = 0.0, soil: str | None = None) -> dict:
     base = read_scene(BASE)
-    scene = dataclasses.replace(random_landing(base.scene, SEED, k, features), footpad_mass=footpad_mass)
+    scene = dataclasses.replace(random_landing(base.scene, SEED, k, features), footpad_mass=footpad_mass,
+                                soil=soil_presets()[soil] if soil else None, footpad_diameter=PAD_DIAMETER)
     res = simulate(scene, dataclasses.replace(base.controls, t_final=t_final))
     return {"k": k, "status": res.status, "t_end": float(res.t[-1]), "wall_s": res.wall_s, "steps": res.steps,
             "rejected": res.rejected, "events": res.events, "closure_rel": res.energy["closure_rel"],
@@ -46,17 +50,18 @@ def main() -> None:
     ap.add_argument("--json", type=Path)
     ap.add_argument("--terrain", action="store_true", help="a random step or rock within the leg span in each")
     ap.add_argument("--footpad-mass", type=float, default=0.0, help="footpad mass, kg (0: massless, the default)")
+    ap.add_argument("--soil", help="a shipped soil under the footpads (needs --footpad-mass)")
     a = ap.parse_args()
-    one(0, 0.01)                                           # compile (cached) before timing
+    one(0, 0.01, a.terrain, a.footpad_mass, a.soil)        # compile (cached) before timing
     t0 = time.perf_counter()
     with ProcessPoolExecutor(a.workers) as pool:
         runs = list(pool.map(one, range(a.n), [a.t_final] * a.n, [a.terrain] * a.n, [a.footpad_mass] * a.n,
-                             chunksize=8))
+                             [a.soil] * a.n, chunksize=8))
     wall = time.perf_counter() - t0
     walls = np.array([r["wall_s"] for r in runs])
     sim_t = np.array([r["t_end"] for r in runs])
     out = {"n": a.n, "t_final_s": a.t_final, "workers": a.workers, "terrain": a.terrain,
-           "footpad_mass_kg": a.footpad_mass,
+           "footpad_mass_kg": a.footpad_mass, "soil": a.soil,
            "machine": platform.processor() or platform.machine(),
            "outcomes": dict(Counter(r["status"] for r in runs)),
            "failed": [r["k"] for r in runs if r["status"] == "failed" or not r["finite"]],

@@ -328,7 +328,7 @@ def test_compiled_code_for_one_leg_kind_takes_that_kind_alone(name, kind):
     their own model."""
     import numba
     from alightsize_sim import articulated_leg, footpad_mass, footpad_slip, legs, telescoping_leg
-    from alightsize_sim.footpad_mass import PadModel
+    from alightsize_sim.footpad_mass import pad_model
     geo, _ = legs.pack(read_scene(f"{SCENES}/{name}.toml").scene.legs)
     assert (geo[4] is None) == (kind == "articulated_leg") and (geo[8] is None) == (kind == "telescoping_leg")
     module = {"telescoping_leg": telescoping_leg, "articulated_leg": articulated_leg}[kind]
@@ -336,7 +336,7 @@ def test_compiled_code_for_one_leg_kind_takes_that_kind_alone(name, kind):
     assert legs._leg_force(t, *[None] * 13) is module.leg_force.py_func
     assert legs._free_footpad(t, *[None] * 6) is module.free_footpad.py_func
     assert legs._lift_shape(t, *[None] * 9) is module.lift_shape.py_func
-    none, arr, pad = numba.types.none, numba.typeof(np.zeros(3)), numba.typeof(PadModel(0.5, 0.5, 1.0, 1e-3))
+    none, arr, pad = numba.types.none, numba.typeof(np.zeros(3)), numba.typeof(pad_model(0.5, 0.5, 1.0, 1e-3))
     args = [None] * 7
     assert footpad_slip._contact_force(*args, none, *[None] * 10) is footpad_slip._held
     assert footpad_slip._contact_force(*args, arr, *[None] * 10) is footpad_slip._slipping

@@ -11,7 +11,10 @@ from scipy.integrate import quad, solve_ivp
 from alightsize_sim import soil as sl
 from alightsize_sim.soil import Soil
 
-PRESETS = sl.soil_presets()
+from alightsize.common.errors import InputError
+from alightsize.model.soils import read_soil, soil_presets
+
+PRESETS = soil_presets()
 LUNAR, SAND = PRESETS["lunar-regolith"], PRESETS["dry-sand"]
 CLAY = Soil(0.5, 13.19e3, 692.15e3, 4.14e3, math.radians(13.0), 17e3)   # n < 1: z^n has an infinite slope at 0
 RIGID = Soil.rigid_plastic(50e3)
@@ -49,7 +52,8 @@ def test_constant_bearing_pressure_is_the_n0_case_and_stops_where_work_equals_en
     p0, s = 50e3, RIGID.packed
     assert (RIGID.n, RIGID.k_c, RIGID.k_phi) == (0.0, 0.0, p0)
     assert [sl.pressure(s, b, z) for b in (0.1, 2.0) for z in (1e-6, 0.3)] == [p0] * 4
-    assert sl.pressure(s, B, 0.0) == 0.0                                  # no pressure before contact
+    assert sl.pressure(s, B, -1e-9) == 0.0                                # no pressure above the surface
+    assert sl.pressure(s, B, 0.0) == p0                                   # at it, the limit from within
     energy = 0.5 * 1500.0 * 3.0 ** 2                                      # 1.5 t on the pad at 3 m/s
     assert sl.sinkage_depth(s, AREA, B, energy) == pytest.approx(energy / (p0 * AREA), rel=1e-6)
     assert sl.sinkage_depth(s, AREA, 0.05, energy) == sl.sinkage_depth(s, AREA, 5.0, energy)
@@ -111,10 +115,21 @@ def test_presets_equal_the_cited_table_in_si():
 def test_presets_are_physically_sensible():
     """Positive parameters, friction angles of granular soils, unit weights of density 1-2.5 g/cm^3 under
     lunar (1.62) and terrestrial (9.81 m/s^2) gravity."""
-    for soil in PRESETS.values():
+    for soil in (LUNAR, SAND):
         assert soil.n > 0 and soil.k_c > 0 and soil.k_phi > 0 and soil.c > 0
         assert math.radians(20) < soil.phi < math.radians(45)
     assert 1000 * 1.62 < LUNAR.gamma < 2500 * 1.62 and 1000 * 9.81 < SAND.gamma < 2500 * 9.81
+
+
+def test_the_lm_design_surface_bears_12_psi_under_any_pad():
+    """AFFDL-TR-66-33 App. I (Grumman, 1964): the LM's 37 in footpads were designed for a surface of 12 psi
+    bearing strength: a constant bearing pressure, so a 37 in pad carries 12 psi x its area at any sinkage
+    (12 psi = 82,737 Pa to the preset's five digits)."""
+    lem = PRESETS["lem-design-surface"]
+    assert (lem.n, lem.k_c) == (0.0, 0.0) and lem.k_phi == pytest.approx(12 * 6894.757, rel=1e-5)
+    area = math.pi * (37 * 0.0254) ** 2 / 4
+    assert sl.normal_force(lem.packed, area, 37 * 0.0254 / 2, 0.05) == pytest.approx(12 * 4.4482216 * (
+        math.pi * 37 ** 2 / 4), rel=1e-5)
 
 
 def test_a_lunar_module_footpad_sinks_millimetres_under_its_static_load():
@@ -142,11 +157,14 @@ def test_reader_converts_units_and_rejects_what_it_cannot_read(tmp_path):
     good = ('name = "x"\nn = 0.5\nk_c = "2 N/m^(n+1)"\nk_phi = "3 MN/m^(n+2)"\nc = "4 kPa"\nphi = "30 deg"\n'
             'gamma = "16 kN/m^3"\n')
     (tmp_path / "x.toml").write_text(good)
-    x = sl.read_soil(tmp_path / "x.toml")
+    x = read_soil(tmp_path / "x.toml")
     assert (x.n, x.k_c, x.k_phi, x.c, x.gamma) == (0.5, 2.0, 3e6, 4e3, 16e3)
     assert x.phi == pytest.approx(math.pi / 6, rel=1e-15)
-    for bad in (good.replace("kPa", "psi"), good.replace("16 kN", "16 mN"), good.replace('"30 deg"', '"0.5 rad"'),
-                good.replace('c = "4 kPa"', 'c = "four kPa"'), good.replace("n = 0.5\n", ""), good + "mu = 1\n"):
+    for bad, key in ((good.replace("kPa", "psi"), "c"), (good.replace("16 kN", "16 mN"), "gamma"),
+                     (good.replace('"30 deg"', '"30 m"'), "phi"), (good.replace('c = "4 kPa"', 'c = "four kPa"'), "c"),
+                     (good.replace("n = 0.5\n", ""), "n"), (good + "mu = 1\n", "mu"),
+                     (good.replace('"2 N/m^(n+1)"', '"0 N/m^(n+1)"').replace('"3 MN', '"0 MN'), "")):
         (tmp_path / "bad.toml").write_text(bad)
-        with pytest.raises(ValueError):
-            sl.read_soil(tmp_path / "bad.toml")
+        with pytest.raises(InputError) as err:
+            read_soil(tmp_path / "bad.toml")
+        assert err.value.file.endswith("bad.toml") and err.value.key == key

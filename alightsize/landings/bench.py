@@ -19,6 +19,7 @@ from scipy import integrate, optimize
 
 from alightsize_sim import landing_kernel as lk
 from alightsize_sim.articulated_leg import ArticulatedLeg
+from alightsize_sim.footpad_mass import sink_event
 from alightsize_sim.landing import Controls, Result, _Run, accel_g, initial_state, simulate
 
 from alightsize.common.atomic import write_atomic
@@ -131,13 +132,15 @@ def scipy_landing(cfg: SceneConfig, ctl: Controls, method: str) -> tuple[dict, i
 
     def accept(tt, yy, which):
         """Commit memory at an accepted state (event `which` if >= 0: a contact switch below n, a slide from
-        n on, which the commit starts, a cell's turn or loading-curve corner from 2n on); the peak acceleration
-        there."""
+        n on, which the commit starts, a footpad's soil mode from 2n on, a cell's turn or loading-curve corner from
+        3n on); the peak acceleration there."""
         dy = f(tt, yy)
         started = lk._commit(run.geo, run.cells, run.mu, run.mem, run.contact, run.P, run.sliding, run.shape,
                              run.armed, run.cev, yy, run.energy, run.last, work, g)
-        if which >= 2 * n:
+        if which >= 3 * n:
             lk.cell_event(run.cells, run.cev, which, n)
+        elif which >= 2 * n:
+            sink_event(run.mu, yy, which - 2 * n, run.sliding)
         elif 0 <= which < n:
             lk.switch(run.geo, run.cells, run.mu, run.mem, run.contact, run.P, run.sliding, run.shape, run.armed, yy,
                       which, run.last, work)

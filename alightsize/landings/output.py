@@ -13,6 +13,8 @@ import pandas as pd
 from alightsize_sim import crush_cell
 from alightsize_sim.landing import Result, kinetic
 from alightsize_sim.rigid_body import quat_matrix, roll_yaw_pitch
+from alightsize_sim.terrain import height
+from alightsize_sim.terrain import pack as pack_terrain
 
 from alightsize.common.atomic import write_atomic
 from alightsize.model.scene_config import SceneConfig
@@ -86,11 +88,24 @@ def onset(t: np.ndarray, x: np.ndarray) -> np.ndarray:
     return np.array([np.max(np.abs(np.diff(np.interp(grid, t, x[:, k])))) / ONSET_WINDOW for k in range(x.shape[1])])
 
 
+def max_sinkage(cfg: SceneConfig, res: Result) -> np.ndarray:
+    """Per leg, the deepest its footpad went below the surface under it while on the ground (m; 0 without soil)."""
+    n = len(cfg.scene.legs)
+    if cfg.scene.soil is None:
+        return np.zeros(n)
+    packed = pack_terrain(cfg.scene.terrain)
+    depth = np.zeros(n)
+    for k, i in zip(*np.nonzero(res.contact)):
+        x, y, z = res.footpad[k, i]
+        depth[i] = max(depth[i], height(packed, x, y) - z)
+    return depth
+
+
 def summary(cfg: SceneConfig, res: Result) -> dict:
     xdd, omd = body_histories(cfg, res)
     kind, reason = outcome(cfg, res)
     legs = []
-    met = features_met(cfg.scene, res)
+    met, sunk = features_met(cfg.scene, res), max_sinkage(cfg, res)
     for i, leg in enumerate(cfg.scene.legs):
         cells = []
         for j, cell in enumerate(leg.cells):
@@ -100,7 +115,7 @@ def summary(cfg: SceneConfig, res: Result) -> dict:
                           "energy_J": float(res.cell_energy[i, j]), "bottomed": bool(dmax > cell.curve.bottoming)})
         legs.append({"leg": i + 1, "cells": cells,
                      "max_ground_force_N": float(np.max(np.linalg.norm(res.leg_force[:, i], axis=1))),
-                     "features": met[i]})
+                     "features": met[i], "max_sinkage_m": float(sunk[i])})
     return {"schema": "alightsize.simulate/1", "scene": cfg.name, "outcome": kind, "reason": reason,
             "t_end_s": float(res.t[-1]),
             "peak": {"xdd_g": np.max(np.abs(xdd), axis=0).tolist(), "omd_rad_s2": np.max(np.abs(omd), axis=0).tolist(),

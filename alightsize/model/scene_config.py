@@ -24,6 +24,7 @@ from alightsize_sim.terrain import Box, HeightField, Hemisphere, Step, Terrain
 from alightsize.common.config import Node, load_toml
 from alightsize.model.gravity import read_gravity
 from alightsize.model.legs import LENGTHS, read_curve, read_geometry
+from alightsize.model.soils import find_soil
 
 
 
@@ -111,9 +112,9 @@ def _legs(node: Node, cells: dict[str, Node]) -> list[dict]:
     if kind == "articulated":
         return _articulated_legs(node, cells)
     node.allow(("kind", "count", "radius", "height", "first_azimuth", "length", "pad_lever", "pad_angles", "axial",
-                "pads", "cell_factors", "small_angle", "footpad_mass", "note"))
+                "pads", "cell_factors", "small_angle", "footpad_mass", "footpad_diameter", "note"))
     n, radius, height, az0 = _pattern(node)
-    pad_mass = _footpad_mass(node)
+    pad_mass, pad_diameter = _footpad_mass(node), _footpad_diameter(node)
     rho = node.quantity("length", "length")
     lever = node.quantity("pad_lever", "length", 0.0, positive=False) if node.has("pad_lever") else 0.0
     angles_raw = node.raw("pad_angles", [])
@@ -133,7 +134,7 @@ def _legs(node: Node, cells: dict[str, Node]) -> list[dict]:
         az = az0 + 2 * np.pi * i / n
         legs.append(dict(kind=kind, attach=np.array([radius * np.cos(az), radius * np.sin(az), height]), rho=rho,
                          lever=lever, angles=angles, axial=axial, pads=pads, small=small, factors=factors[i],
-                         footpad_mass=pad_mass))
+                         footpad_mass=pad_mass, footpad_diameter=pad_diameter))
     return legs
 
 
@@ -186,6 +187,11 @@ def _footpad_mass(node: Node) -> float:
     return mass
 
 
+def _footpad_diameter(node: Node) -> float:
+    """Each footpad's diameter: round footpads bearing on soil (0, the default: not given)."""
+    return node.quantity("footpad_diameter", "length") if node.has("footpad_diameter") else 0.0
+
+
 def _pattern(node: Node) -> tuple[int, float, float, float]:
     n = node.integer("count", minimum=2)
     radius = node.quantity("radius", "length")
@@ -198,9 +204,9 @@ def _articulated_legs(node: Node, cells: dict[str, Node]) -> list[dict]:
     """Articulated legs (Sec. V.F): the leg origin (lower inboard parallelogram pivot) at radius and height, S1
     outward along the azimuth, S3 along the roll axis; the geometry of Fig. 22-25 and the initial psi."""
     node.allow(("kind", "count", "radius", "height", "first_azimuth", "geometry", "length_scale", "psi_initial",
-                "upper", "lower", "cell_factors", "footpad_mass", "note"))
+                "upper", "lower", "cell_factors", "footpad_mass", "footpad_diameter", "note"))
     n, radius, height, az0 = _pattern(node)
-    pad_mass = _footpad_mass(node)
+    pad_mass, pad_diameter = _footpad_mass(node), _footpad_diameter(node)
     geometry = read_geometry(node.table("geometry"))
     scale = node.number("length_scale", 1.0)
     geometry = geometry._replace(**{k: scale * getattr(geometry, k) for k in LENGTHS})   # test-model scaling (Table 27)
@@ -216,7 +222,7 @@ def _articulated_legs(node: Node, cells: dict[str, Node]) -> list[dict]:
         az = az0 + 2 * np.pi * i / n
         legs.append(dict(kind="articulated", attach=np.array([radius * np.cos(az), radius * np.sin(az), height]),
                          azimuth=az, geometry=geometry, psi0=psi0, upper=upper, lower=lower, factors=factors[i],
-                         footpad_mass=pad_mass))
+                         footpad_mass=pad_mass, footpad_diameter=pad_diameter))
     return legs
 
 
@@ -354,11 +360,18 @@ def read_scene(path: str | Path, overrides: dict[str, object] | None = None) -> 
         names.append(("axial", *[f"rot{j + 1}" for j in range(len(spec["angles"]))]))
 
     ter = root.table("terrain", optional=True)
-    slope = mu_s = mu_d = None
+    slope = mu_s = mu_d = soil = None
     features = Terrain()
     if ter:
-        ter.allow(("slope", "mu_static", "mu_dynamic", "steps", "rocks", "height_field", "note"))
+        ter.allow(("slope", "mu_static", "mu_dynamic", "steps", "rocks", "height_field", "soil", "note"))
         features = _features(ter, path)
+        if ter.has("soil"):
+            soil = find_soil(ter, "soil", path.parent)
+            if not leg_specs[0]["footpad_mass"] > 0:
+                raise ter.error("soil", "footpads with mass to sink into it ([legs] footpad_mass > 0)",
+                                "massless footpads")
+            if not leg_specs[0]["footpad_diameter"] > 0:
+                raise ter.error("soil", "the footpads' bearing size ([legs] footpad_diameter)", "none given")
         slope = ter.quantity("slope", "angle", 0.0, positive=False) if ter.has("slope") else 0.0
         mu_s = ter.number("mu_static", 1.5e6, positive=False)
         mu_d = ter.number("mu_dynamic", 1.0e6, positive=False)
@@ -415,7 +428,8 @@ def read_scene(path: str | Path, overrides: dict[str, object] | None = None) -> 
     body = np.zeros((0, 3)) if bottom is None else (to_geo.T @ (np.array([0.0, 0.0, -bottom]) - cg))[None, :]
     scene = Scene(mass, moments, tuple(legs), lepk @ np.array([0.0, 0.0, -g]), lepk @ vel, q0, to_geo.T @ rates,
                   mu_s if mu_s is not None else 1.5e6, mu_d if mu_d is not None else 1.0e6, to_geo.T @ np.array([0.0, 0, 1]),
-                  body, leg_specs[0]["footpad_mass"], terrain=features)
+                  body, leg_specs[0]["footpad_mass"], terrain=features, soil=soil,
+                  footpad_diameter=leg_specs[0]["footpad_diameter"])
     return SceneConfig(path, name, title, scene, c, to_geo, lepk, interval, srs_damping, tuple(names))
 
 

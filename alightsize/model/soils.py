@@ -1,0 +1,67 @@
+"""Soil files: one TOML file per soil (materials/soils/ ships the presets; docs/soil.md), read to
+alightsize_sim.soil.Soil in SI. Scenes name a preset by its file stem or give a path to a file of their own."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+from alightsize_sim.soil import Soil
+
+from alightsize.common.config import Node, load_toml
+from alightsize.common.resources import data_dir
+
+_UNITS = {"k_c": "N/m^(n+1)", "k_phi": "N/m^(n+2)", "c": "Pa", "gamma": "N/m^3"}   # SI base unit of each key
+_PREFIX = {"": 1.0, "k": 1e3, "M": 1e6}
+
+
+def _quantity(node: Node, key: str) -> float:
+    """A value as the file states it, "NUMBER UNIT" with the key's SI unit, optionally prefixed k or M (the
+    unit of k_c and k_phi depends on n, so it is spelled with n)."""
+    text = node.raw(key)
+    expected = f'a value like "1.4 k{_UNITS[key]}" (prefix k or M allowed)'
+    try:
+        number, unit = str(text).split(maxsplit=1)
+        value = float(number)
+    except ValueError:
+        raise node.error(key, expected, repr(text)) from None
+    prefix = unit[: len(unit) - len(_UNITS[key])]
+    if not unit.endswith(_UNITS[key]) or prefix not in _PREFIX or not math.isfinite(value) or value < 0:
+        raise node.error(key, expected, repr(text))
+    return value * _PREFIX[prefix]
+
+
+def read_soil(path: str | Path) -> Soil:
+    """One soil file: name, n, k_c, k_phi, c, phi, gamma with their units, and a [source] table."""
+    node = load_toml(path)
+    node.allow(("name", "n", "k_c", "k_phi", "c", "phi", "gamma", "source"))
+    name = node.string("name")
+    n = node.number("n", positive=False)
+    values = {k: _quantity(node, k) for k in ("k_c", "k_phi", "c", "gamma")}
+    phi = node.quantity("phi", "angle", positive=False)
+    src = node.table("source", optional=True)
+    source = {k: src.string(k) for k in list(src.data)} if src else {}
+    if src:
+        src.finish()
+    node.finish()
+    try:
+        return Soil(n, values["k_c"], values["k_phi"], values["c"], phi, values["gamma"], name, source)
+    except ValueError as exc:
+        raise node.error("", "soil parameters " + str(exc).removeprefix("a soil needs "), "other values") from None
+
+
+def soil_presets() -> dict[str, Soil]:
+    """The shipped soils, keyed by file stem (materials/soils/*.toml)."""
+    return {p.stem: read_soil(p) for p in sorted((data_dir("materials") / "soils").glob("*.toml"))}
+
+
+def find_soil(node: Node, key: str, base: Path) -> Soil:
+    """The soil a scene names at `key`: a preset's name or a soil file's path (relative to `base`)."""
+    name = node.string(key)
+    presets = soil_presets()
+    if name in presets:
+        return presets[name]
+    path = base / name
+    if not path.is_file():
+        raise node.error(key, "a shipped soil (" + ", ".join(sorted(presets)) + ") or a soil file's path", repr(name))
+    return read_soil(path)
