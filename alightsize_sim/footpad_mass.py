@@ -6,9 +6,10 @@ STICK (0): the footpad is held where it is; it starts to slide when the leg's in
 static limit mu_S FE3 (eq. 33-34), located as an event. SLIDE (1): m u' = push - mu_D FE3 u/|u| (eq. 35-37
 with the footpad's inertia). BAND (2): |u| below `band` (Karnopp 1985: friction in a small velocity band
 balances the push up to the dynamic limit), m u' = push - clamp(push, mu_D FE3); a footpad touching down or
-starting to slide starts here. Entering or leaving the band is a located event, so the friction force is
-smooth inside every step and the Runge-Kutta keeps its order; a banded footpad whose push falls to the
-dynamic limit sticks (its velocity, at most `band`, is dropped: the kinetic energy lost counts as friction).
+starting to slide starts here, and leaves it at twice the band (hysteresis, LEAVE). Entering or leaving the
+band is a located event, so the friction force is smooth inside every step and the Runge-Kutta keeps its
+order; a banded footpad whose push falls to the dynamic limit sticks (its velocity, below LEAVE x band, is
+dropped: the kinetic energy lost counts as friction).
 
 The massless leg passes the ground force X to the capsule. The cells deform at the footpad's velocity
 relative to the capsule (the leg's rate is computed with v - u); the capsule loses cells' power - fe . u
@@ -19,8 +20,9 @@ On soil (`PadModel.area` > 0; alightsize_sim.soil) a footpad also sinks along th
 and rate w are state, with two modes located as events: HELD (w = 0: the soil carries the leg's push FE3 as
 long as it is below the bearing force R(s) = A p(s)) and SINKING (m w' = FE3 - R(s), from the moment FE3
 exceeds R(s) until w falls to zero; the soil is plastic and gives nothing back). In 1-D the velocity meets zero
-exactly, so no band is needed. The friction limit is then mu R(s) while it sinks, and a footpad sliding while
-sunk also plows: Rankine's passive resistance F_p(s) adds to the friction limit (static and dynamic). The
+exactly, so no band is needed. Friction stays mu FE3 (the massless limit: the footpad's normal inertia does not
+relieve it), and a footpad sliding while sunk also plows: Rankine's passive resistance F_p(s) adds to the
+friction limit (static and dynamic). The
 capsule's extra power is + FE3 w; the soil takes R w and the plowing share of the slide's work. A footpad
 that touched down on a rock, or on a face, stays on rigid ground (mode RIGID). A footpad touches down at rest
 (its impact momentum goes with the capsule's mass, as on rigid ground).
@@ -51,6 +53,8 @@ from .vec3 import mv
 NB = 14            # body states before the footpads'
 FACE, STICK, SLIDE, BAND = -1, 0, 1, 2   # FACE: held on a vertical face it met (any friction model)
 FLOOR = 1e-6       # N: in-plane force below this never starts a slide (round-off at zero load)
+LEAVE = 2.0        # a banded footpad slides at LEAVE x band, a sliding one enters the band at band (hysteresis:
+                   # footpads at the band's edge, coupled through the capsule, cannot switch back and forth at once)
 SINK_BAND = 1e-6   # a sinking footpad whose speed turned negative stops only under a push this much below R(s)
 
 RIGID, HELD, SINKING = -1.0, 0.0, 1.0     # soil modes of a footpad on the ground
@@ -91,15 +95,15 @@ def _bearing(mu, s):
 
 @njit(cache=True)
 def _ground(mu, y, i, n, fe2):
-    """(normal force N the ground gives footpad i, plowing resistance F_p) under the leg's push fe2: N = fe2 on
-    rigid ground or held by the soil, R(s) while it sinks; F_p(s) while sunk."""
+    """(normal load N of footpad i's friction, plowing resistance F_p) under the leg's push fe2: N = fe2, also
+    while it sinks (the massless limit: the footpad's normal inertia does not relieve its friction, so a
+    footpad starting to sink into soil that bears nothing yet is not flung sideways); F_p(s) while sunk."""
+    plow = 0.0
     if mu.area > 0.0:
         k = _sink_at(y, n, i)
         if y[k + 3] != RIGID:
-            s = y[k]
-            normal = _bearing(mu, s) if y[k + 3] == SINKING else max(fe2, 0.0)
-            return normal, plowing_force(mu.soil, mu.diameter, s)
-    return max(fe2, 0.0), 0.0
+            plow = plowing_force(mu.soil, mu.diameter, y[k])
+    return max(fe2, 0.0), plow
 
 
 def integrates_dampers(mu):
@@ -117,8 +121,8 @@ def _integrates_dampers(mu):
 def pad_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, frc, rte, X, y):
     """Leg i's forces with its footpad at P0 (held) or where its state puts it (sliding, sunk); returns the
     tuple of footpad_slip.contact_force: (mode, cells' power, alpha, beta, psi, slip event value, 0, 0, soil
-    event value). The slip event value is the static margin mu_S N + F_p + FLOOR - FE12 while it sticks,
-    |u| - band while it slides and band - |u| in the band; the soil's is R(s) + FLOOR - FE3 while held, w while
+    event value). The slip event value is the static margin mu_S FE3 + F_p + FLOOR - FE12 while it sticks,
+    |u| - band while it slides and LEAVE band - |u| in the band; the soil's is R(s) + FLOOR - FE3 while held, w while
     sinking (1 on rigid ground)."""
     n = cells[2].shape[0]
     o = NB + 4 * i
@@ -139,7 +143,7 @@ def pad_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, f
         g = mu.mu_s * normal + plow + FLOOR - np.sqrt(fe[0] * fe[0] + fe[1] * fe[1])    # eq. 33
     else:
         speed = np.hypot(u0, u1)
-        g = speed - mu.band if sliding == SLIDE else mu.band - speed
+        g = speed - mu.band if sliding == SLIDE else LEAVE * mu.band - speed
     return sliding, power, alpha, beta, psi, g, 0.0, 0.0, _sink_event(mu, y, i, n, fe[2])
 
 
@@ -209,9 +213,9 @@ def _rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy):
         fe = mv(R, Xt[i, 0], Xt[i, 1], Xt[i, 2])
         normal, plow = _ground(mu, y, i, n, fe[2])
         if mu.area > 0.0 and y[k + 3] == SINKING:
-            wk = y[k + 1]
-            dy[k], dy[k + 1] = wk, (fe[2] - normal) / mu.mass
-            sunk += normal * wk
+            wk, bearing = y[k + 1], _bearing(mu, y[k])
+            dy[k], dy[k + 1] = wk, (fe[2] - bearing) / mu.mass
+            sunk += bearing * wk
             extra += fe[2] * wk
         if sliding[i] > STICK:
             u0, u1 = y[o + 2], y[o + 3]
@@ -270,12 +274,15 @@ def _soil_switch(mu, y, i, n, P, face, down, Xt, R, terrain):
     y[k + 3] = RIGID
     if not down:
         return
+    # Its hole: within its radius, and the ground it landed on is the hole's bottom (not a lower level below it).
+    in_hole = _hole(mu, y, i, n, P[i, 0], P[i, 1], np.inf) <= P[i, 2] + 1e-12
+    if face:          # caught on a face (a riser, a rock's side, its hole's wall): held, rigid; its hole, kept,
+        return        # moves under it (a footpad leaving a face over its hole's wall can land in the hole again)
     kind = features_at(terrain, P[i, 0], P[i, 1])[0]
-    if face or kind == HEMISPHERE or kind == BOX:                      # rocks and faces are rigid
+    if kind == HEMISPHERE or kind == BOX or not in_hole:               # a rock (rigid) or fresh ground
         y[k], y[k + 2] = 0.0, P[i, 2]
+    if kind == HEMISPHERE or kind == BOX:
         return
-    if _hole(mu, y, i, n, P[i, 0], P[i, 1], np.inf) == np.inf:
-        y[k], y[k + 2] = 0.0, P[i, 2]                               # fresh ground, not its hole
     fe = mv(R, Xt[i, 0], Xt[i, 1], Xt[i, 2])
     y[k + 3] = SINKING if fe[2] > _bearing(mu, y[k]) + FLOOR else HELD
 

@@ -335,8 +335,8 @@ def switch(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, which, las
 
 
 @njit(cache=True)
-def _monitor(geo, cells, mass, inertia, gravity, bottoming, up, body, order, mem, contact, P, shape, y, t, dt_step, ctl,
-             run):
+def _monitor(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem, contact, P, shape, y, t,
+             dt_step, ctl, run):
     """Outcome checks after an accepted step; a status or -1."""
     R = quat_matrix(y[6:10])
     n = len(contact)
@@ -386,8 +386,8 @@ def _monitor(geo, cells, mass, inertia, gravity, bottoming, up, body, order, mem
         if on_ground == n:
             if stable_by_energy(margins):                       # eq. 89-95 (QUIMOT) for every adjacent pair
                 return STABLE
-        elif stable_by_energy(margins) and _hanging_clear(geo, cells, mass, inertia, gravity, order, mem, contact, P,
-                                                          shape, y, R):
+        elif stable_by_energy(margins) and _hanging_clear(geo, cells, mass, inertia, gravity, mu, order, mem, contact,
+                                                          P, shape, y, R):
             if run[S_HANG] < 0.0:
                 run[S_HANG] = t
             if t - run[S_HANG] >= 2.0 * ctl[C_PERIOD] and y[5] >= 0.0:
@@ -398,9 +398,10 @@ def _monitor(geo, cells, mass, inertia, gravity, bottoming, up, body, order, mem
 
 
 @njit(cache=True)
-def _hanging_clear(geo, cells, mass, inertia, gravity, order, mem, contact, P, shape, y, R):
-    """Every leg in the air is clear of the terrain and cannot be brought down by the capsule's kinetic
-    energy about the edge through its grounded neighbours (in their order round the capsule)."""
+def _hanging_clear(geo, cells, mass, inertia, gravity, mu, order, mem, contact, P, shape, y, R):
+    """Every leg in the air is clear of the ground under it (the terrain, or the hole its footpad left in soil)
+    and cannot be brought down by the capsule's kinetic energy about the edge through its grounded neighbours
+    (in their order round the capsule)."""
     n = len(contact)
     for m in range(n):
         i = order[m]
@@ -412,9 +413,9 @@ def _hanging_clear(geo, cells, mass, inertia, gravity, order, mem, contact, P, s
         while not contact[order[b]]:
             b = (b + 1) % n
         foot = free_footpad(geo, cells, i, mem[i], shape[i], y[0:3], R)
-        if not (clearance(geo[9], foot[0], foot[1], foot[2]) > 0.0 and hanging_margin(y[0:3], y[3:6], y[10:13], mass,
-                                                                                     inertia, gravity, P[order[a]],
-                                                 P[order[b]], foot) > 0.0):   # NaN is not clear
+        ground = pad_ground(mu, y, i, n, foot[0], foot[1], height(geo[9], foot[0], foot[1]))
+        if not (foot[2] > ground and hanging_margin(y[0:3], y[3:6], y[10:13], mass, inertia, gravity, P[order[a]],
+                                                    P[order[b]], foot, foot[2] - ground) > 0.0):   # NaN: not clear
             return False
     return True
 
@@ -697,8 +698,8 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
             h = min(ctl[C_MAXSTEP], h * min(5.0, 0.9 * max(e, 1e-10) ** -0.2))
         if not flight:
             run_state[S_H] = h
-        status = _monitor(geo, cells, mass, inertia, gravity, bottoming, up, body, order, mem, contact, P, shape, y, t, h_acc,
-                          ctl, run_state)
+        status = _monitor(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem, contact, P, shape, y,
+                          t, h_acc, ctl, run_state)
         if status >= 0:
             return status, t
         if cnt[K_HIST] >= len(H_t):

@@ -191,10 +191,11 @@ def stable_by_energy(margins: np.ndarray) -> bool:
 
 @njit(cache=True)
 def hanging_margin(r: np.ndarray, v: np.ndarray, omega: np.ndarray, mass: float, inertia: np.ndarray,
-                   gravity: np.ndarray, a: np.ndarray, b: np.ndarray, foot) -> float:
-    """Energy margin (J) of a leg hanging clear of the terrain (its free footpad `foot` at height foot[2] > 0)
-    beside the support edge through the footpads a, b of its grounded neighbours: the work against gravity
-    to turn the capsule about that edge until the footpad touches, less the whole kinetic energy. Positive:
+                   gravity: np.ndarray, a: np.ndarray, b: np.ndarray, foot, clear: float) -> float:
+    """Energy margin (J) of a leg hanging clear of the ground (its free footpad `foot` at height `clear` > 0
+    above the ground under it) beside the support edge through the footpads a, b of its grounded neighbours:
+    the work against gravity to turn the capsule about that edge until the footpad touches, less the whole
+    kinetic energy. Positive:
     the capsule cannot bring the leg down (first order in the small turn; the kinetic energy is all counted,
     translation included, so conservative). Not positive when the turn lowers the CG (the capsule falls onto
     that leg), the footpad lies on the edge's line or a and b coincide."""
@@ -205,7 +206,7 @@ def hanging_margin(r: np.ndarray, v: np.ndarray, omega: np.ndarray, mass: float,
     df = cross(e0, e1, e2, foot[0] - a[0], foot[1] - a[1], foot[2] - a[2])   # footpad displacement per radian
     if not abs(df[2]) >= 1e-12:
         return -1.0
-    turn = foot[2] / -df[2]                            # signed angle (rad) that lands the footpad
+    turn = clear / -df[2]                              # signed angle (rad) that lands the footpad
     c = cross(e0, e1, e2, r[0] - a[0], r[1] - a[1], r[2] - a[2])
     rise = -(gravity[0] * c[0] + gravity[1] * c[1] + gravity[2] * c[2]) * turn   # work per unit mass
     kinetic = 0.5 * mass * (v[0] ** 2 + v[1] ** 2 + v[2] ** 2) + 0.5 * (

@@ -264,20 +264,26 @@ def test_quiescence_momenta_weigh_as_the_report_in_feet():
 def test_hanging_leg_margin_closed_form():
     """Edge along x through (0,0,0) and (1,0,0), CG at y = +1, z = 1, a footpad hanging h = 0.02 m up at
     y = -1: turning about the edge by h rad (foot 1 m from the edge) lands it and lifts the CG by h (1 m on
-    the other side), so the margin is m g h less the kinetic energy (closed form, rel 1e-12). With the CG
-    on the footpad's side the turn lowers it: not clear."""
+    the other side), so the margin is m g h less the kinetic energy (closed form, rel 1e-12). What counts is
+    the height above the ground under the footpad: the same footpad 0.3 m higher over a 0.3 m rock, or 0.03 m
+    lower over a hole 0.05 m deep, has the same margin. With the CG on the footpad's side the turn lowers it:
+    not clear."""
     a, b, h = np.zeros(3), np.array([1.0, 0.0, 0.0]), 0.02
     foot, cg = np.array([0.5, -1.0, h]), np.array([0.5, 1.0, 1.0])
-    at_rest = st.hanging_margin(cg, ZERO, ZERO, M, INERTIA, DOWN, a, b, foot)
+    at_rest = st.hanging_margin(cg, ZERO, ZERO, M, INERTIA, DOWN, a, b, foot, h)
     assert at_rest == pytest.approx(M * G * h, rel=1e-12)
+    for lift in (0.3, -0.03):
+        assert st.hanging_margin(cg, ZERO, ZERO, M, INERTIA, DOWN, a, b, foot + [0, 0, lift], h) == pytest.approx(
+            at_rest, rel=1e-12)
     v, w = np.array([0.1, 0.0, 0.0]), np.array([0.0, 0.2, 0.0])
     kinetic = 0.5 * M * 0.01 + 0.5 * INERTIA[1] * 0.04
-    assert st.hanging_margin(cg, v, w, M, INERTIA, DOWN, a, b, foot) == pytest.approx(M * G * h - kinetic, rel=1e-12)
-    assert st.hanging_margin(np.array([0.5, -0.5, 1.0]), ZERO, ZERO, M, INERTIA, DOWN, a, b, foot) < 0.0
+    assert st.hanging_margin(cg, v, w, M, INERTIA, DOWN, a, b, foot, h) == pytest.approx(M * G * h - kinetic,
+                                                                                          rel=1e-12)
+    assert st.hanging_margin(np.array([0.5, -0.5, 1.0]), ZERO, ZERO, M, INERTIA, DOWN, a, b, foot, h) < 0.0
 
 
 def test_hanging_leg_margin_of_a_degenerate_edge_is_not_clear():
     """Two grounded footpads at one point give no edge to turn about: never judged clear (no NaN)."""
     a = np.array([0.3, 0.2, 0.0])
     assert st.hanging_margin(np.array([0.0, 0.0, 1.0]), ZERO, ZERO, M, INERTIA, DOWN, a, a.copy(),
-                             np.array([1.0, 0.0, 0.05])) == -1.0
+                             np.array([1.0, 0.0, 0.05]), 0.05) == -1.0
