@@ -22,8 +22,8 @@ long as it is below the bearing force R(s) = A p(s)) and SINKING (m w' = FE3 - R
 exceeds R(s) until w falls to zero; the soil is plastic and gives nothing back). In 1-D the velocity meets zero
 exactly, so no band is needed. Friction stays mu FE3 (the massless limit: the footpad's normal inertia does not
 relieve it), and a footpad sliding while sunk also plows: Rankine's passive resistance F_p(s) adds to the
-friction limit (static and dynamic). The
-capsule's extra power is + FE3 w; the soil takes R w and the plowing share of the slide's work. A footpad
+friction limit (static and dynamic). The capsule's extra power is + FE3 w; the soil takes R w and the plowing
+share of the slide's work. A footpad
 that touched down on a rock, or on a face, stays on rigid ground (mode RIGID). A footpad touches down at rest
 (its impact momentum goes with the capsule's mass, as on rigid ground).
 
@@ -47,7 +47,7 @@ from . import crush_cell
 from .legs import leg_force
 from .rigid_body import quat_matrix
 from .soil import normal_force, plowing_force, sinkage_depth, sinkage_work
-from .terrain import BOX, HEMISPHERE, features_at
+from .terrain import BOX, HEMISPHERE, features_at, height
 from .vec3 import mv
 
 NB = 14            # body states before the footpads'
@@ -94,16 +94,16 @@ def _bearing(mu, s):
 
 
 @njit(cache=True)
-def _ground(mu, y, i, n, fe2):
-    """(normal load N of footpad i's friction, plowing resistance F_p) under the leg's push fe2: N = fe2, also
-    while it sinks (the massless limit: the footpad's normal inertia does not relieve its friction, so a
-    footpad starting to sink into soil that bears nothing yet is not flung sideways); F_p(s) while sunk."""
-    plow = 0.0
+def _plow(mu, y, i, n):
+    """F_p: footpad i's plowing resistance at its sinkage (0 on rigid ground). It adds to a friction limit that
+    stays on the leg's push FE3 also while the footpad sinks (the massless limit: the footpad's normal inertia
+    does not relieve its friction, so a footpad starting to sink into soil that bears nothing yet is not
+    flung sideways)."""
     if mu.area > 0.0:
         k = _sink_at(y, n, i)
         if y[k + 3] != RIGID:
-            plow = plowing_force(mu.soil, mu.diameter, y[k])
-    return max(fe2, 0.0), plow
+            return plowing_force(mu.soil, mu.diameter, y[k])
+    return 0.0
 
 
 def integrates_dampers(mu):
@@ -122,8 +122,8 @@ def pad_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, f
     """Leg i's forces with its footpad at P0 (held) or where its state puts it (sliding, sunk); returns the
     tuple of footpad_slip.contact_force: (mode, cells' power, alpha, beta, psi, slip event value, 0, 0, soil
     event value). The slip event value is the static margin mu_S FE3 + F_p + FLOOR - FE12 while it sticks,
-    |u| - band while it slides and LEAVE band - |u| in the band; the soil's is R(s) + FLOOR - FE3 while held, w while
-    sinking (1 on rigid ground)."""
+    |u| - band while it slides and LEAVE band - |u| in the band; the soil's is R(s) + FLOOR - FE3 while held, w
+    while sinking (1 on rigid ground)."""
     n = cells[2].shape[0]
     o = NB + 4 * i
     P[0], P[1], P[2] = P0[0], P0[1], P0[2]
@@ -138,9 +138,8 @@ def pad_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, f
     if sliding == FACE:
         return sliding, power, alpha, beta, psi, 1.0, 0.0, 0.0, 1.0
     fe = mv(R, X[0], X[1], X[2])
-    normal, plow = _ground(mu, y, i, n, fe[2])
     if sliding == STICK:
-        g = mu.mu_s * normal + plow + FLOOR - np.sqrt(fe[0] * fe[0] + fe[1] * fe[1])    # eq. 33
+        g = mu.mu_s * max(fe[2], 0.0) + _plow(mu, y, i, n) + FLOOR - np.sqrt(fe[0] * fe[0] + fe[1] * fe[1])  # eq. 33
     else:
         speed = np.hypot(u0, u1)
         g = speed - mu.band if sliding == SLIDE else LEAVE * mu.band - speed
@@ -195,9 +194,6 @@ def _rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy):
     extra, lost, other, sunk = 0.0, 0.0, power, 0.0
     for i in range(n):
         o = NB + 4 * i
-        k = _sink_at(y, n, i) if mu.area > 0.0 else 0
-        if mu.area > 0.0:
-            dy[k] = dy[k + 1] = dy[k + 2] = dy[k + 3] = 0.0
         for j in range(C):
             d = NB + 4 * n + 2 + C * i + j
             dy[d] = 0.0
@@ -208,18 +204,16 @@ def _rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy):
                 dy[d] = (ft[i, j] - static) * rt[i, j]
                 other -= ft[i, j] * rt[i, j]
         dy[o] = dy[o + 1] = dy[o + 2] = dy[o + 3] = 0.0
-        if not contact[i] or sliding[i] == FACE:
-            continue
-        fe = mv(R, Xt[i, 0], Xt[i, 1], Xt[i, 2])
-        normal, plow = _ground(mu, y, i, n, fe[2])
-        if mu.area > 0.0 and y[k + 3] == SINKING:
-            wk, bearing = y[k + 1], _bearing(mu, y[k])
-            dy[k], dy[k + 1] = wk, (fe[2] - bearing) / mu.mass
-            sunk += bearing * wk
-            extra += fe[2] * wk
-        if sliding[i] > STICK:
+        on = contact[i] and sliding[i] != FACE
+        fe = mv(R, Xt[i, 0], Xt[i, 1], Xt[i, 2]) if on else (0.0, 0.0, 0.0)
+        if mu.area > 0.0:
+            p_soil, p_capsule = _sink_rates(mu, y, dy, i, n, fe[2], on)
+            sunk += p_soil
+            extra += p_capsule
+        if on and sliding[i] > STICK:
             u0, u1 = y[o + 2], y[o + 3]
-            limit = mu.mu_d * normal + plow
+            plow = _plow(mu, y, i, n)
+            limit = mu.mu_d * max(fe[2], 0.0) + plow
             g0, g1 = _friction(sliding[i], limit, fe[0], fe[1], u0, u1)
             dy[o], dy[o + 1] = u0, u1
             dy[o + 2], dy[o + 3] = (g0 - fe[0]) / mu.mass, (g1 - fe[1]) / mu.mass
@@ -231,6 +225,19 @@ def _rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy):
     if mu.area > 0.0:
         dy[len(y) - 1] = sunk
     return extra
+
+
+@njit(cache=True)
+def _sink_rates(mu, y, dy, i, n, fe2, on):
+    """Footpad i's soil block rates into dy (zero unless it is on the ground and sinking: s' = w,
+    m w' = FE3 - R(s)); returns (the soil's power R w, the capsule's extra power FE3 w)."""
+    k = _sink_at(y, n, i)
+    dy[k] = dy[k + 1] = dy[k + 2] = dy[k + 3] = 0.0
+    if not (on and y[k + 3] == SINKING):
+        return 0.0, 0.0
+    w, bearing = y[k + 1], _bearing(mu, y[k])
+    dy[k], dy[k + 1] = w, (fe2 - bearing) / mu.mass
+    return bearing * w, fe2 * w
 
 
 def pad_switch(mu, y, i, P, sliding, down, Xt, R, terrain):
@@ -287,15 +294,18 @@ def _soil_switch(mu, y, i, n, P, face, down, Xt, R, terrain):
     y[k + 3] = SINKING if fe[2] > _bearing(mu, y[k]) + FLOOR else HELD
 
 
-def pad_ground(mu, y, i, n, x, yy, top):
-    """Height of the ground under leg i's free footpad (of n) at (x, yy): the surface's, `top`, or on soil the
+def pad_ground(mu, y, i, n, terrain, x, yy):
+    """Height of the ground under leg i's free footpad (of n) at (x, yy): the terrain's surface, or on soil the
     bottom of the hole the footpad left when its centre is over it."""
+    top = height(terrain, x, yy)
     return _hole(mu, y, i, n, x, yy, top) if isinstance(mu, PadModel) else top
 
 
 @overload(pad_ground)
-def _pad_ground(mu, y, i, n, x, yy, top):
-    return _hole.py_func if is_pad(mu) else (lambda mu, y, i, n, x, yy, top: top)
+def _pad_ground(mu, y, i, n, terrain, x, yy):
+    if is_pad(mu):
+        return lambda mu, y, i, n, terrain, x, yy: _hole(mu, y, i, n, x, yy, height(terrain, x, yy))
+    return lambda mu, y, i, n, terrain, x, yy: height(terrain, x, yy)
 
 
 @njit(cache=True)
@@ -386,6 +396,8 @@ def _pad_settle(mu, y, i, P, sliding, Xt):
 @njit(cache=True)
 def _settle(mu, y, i, P, sliding, Xt):
     n = len(sliding)
+    if sliding[i] != BAND and not (mu.area > 0.0 and sliding[i] != FACE):
+        return False
     fe = mv(quat_matrix(y[6:10]), Xt[i, 0], Xt[i, 1], Xt[i, 2])
     changed = False
     if mu.area > 0.0 and sliding[i] != FACE:
@@ -396,8 +408,7 @@ def _settle(mu, y, i, P, sliding, Xt):
             changed = _sink(mu, y, i, n)
     if sliding[i] != BAND:
         return changed
-    normal, plow = _ground(mu, y, i, n, fe[2])
-    if not np.hypot(fe[0], fe[1]) < mu.mu_d * normal + plow or fe[2] <= 0.0:   # unloaded (touching down): in the band
+    if not np.hypot(fe[0], fe[1]) < mu.mu_d * fe[2] + _plow(mu, y, i, n) or fe[2] <= 0.0:   # unloaded: in the band
         return changed
     o = NB + 4 * i
     _stop(mu, y, i, n)

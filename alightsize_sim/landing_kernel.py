@@ -24,7 +24,7 @@ from .footpad_slip import contact_force, slip_events
 from .rigid_body import free_flight, quat_matrix, quat_rate
 from .stability import hanging_margin, quiescence_momenta, quiescence_update, stable_by_energy, tipping_margins
 from .legs import free_footpad, leg_force, lift_shape, main_set, member_strike
-from .terrain import clearance, height
+from .terrain import clearance
 from .vec3 import cross, mtv, mv
 
 # Dormand-Prince 5(4).
@@ -191,7 +191,7 @@ def _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt,
             g[i] = dt[i, 0] - main_set(cells, i, mem[i]) - mt[i, 1]
         else:
             foot = free_footpad(geo, cells, i, mem[i], shape[i], y[0:3], R)
-            g[i] = foot[2] - pad_ground(mu, y, i, n, foot[0], foot[1], height(geo[9], foot[0], foot[1]))
+            g[i] = foot[2] - pad_ground(mu, y, i, n, geo[9], foot[0], foot[1])
         if not (raw or armed[i] > 0 or (contact[i] and mt[i, 1] > 0.0)):
             g[i] += BAND
         g[n + i] = mt[i, 0] if located and contact[i] else 1.0
@@ -319,7 +319,7 @@ def switch(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, which, las
         last[which, 2 * C] = 0.0
     else:
         pad = free_footpad(geo, cells, which, mem[which], shape[which], y[0:3], R)
-        top = pad_ground(mu, y, which, len(contact), pad[0], pad[1], height(geo[9], pad[0], pad[1]))
+        top = pad_ground(mu, y, which, len(contact), geo[9], pad[0], pad[1])
         # A footpad touching down on the surface sits on it; one whose clearance jumped (swept into a step's
         # riser or a box's side) is caught on that face where it is and held there until it lifts off.
         on_face = pad[2] - top > FACE_GAP
@@ -413,7 +413,7 @@ def _hanging_clear(geo, cells, mass, inertia, gravity, mu, order, mem, contact, 
         while not contact[order[b]]:
             b = (b + 1) % n
         foot = free_footpad(geo, cells, i, mem[i], shape[i], y[0:3], R)
-        ground = pad_ground(mu, y, i, n, foot[0], foot[1], height(geo[9], foot[0], foot[1]))
+        ground = pad_ground(mu, y, i, n, geo[9], foot[0], foot[1])
         if not (foot[2] > ground and hanging_margin(y[0:3], y[3:6], y[10:13], mass, inertia, gravity, P[order[a]],
                                                     P[order[b]], foot, foot[2] - ground) > 0.0):   # NaN: not clear
             return False

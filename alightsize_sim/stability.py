@@ -195,10 +195,9 @@ def hanging_margin(r: np.ndarray, v: np.ndarray, omega: np.ndarray, mass: float,
     """Energy margin (J) of a leg hanging clear of the ground (its free footpad `foot` at height `clear` > 0
     above the ground under it) beside the support edge through the footpads a, b of its grounded neighbours:
     the work against gravity to turn the capsule about that edge until the footpad touches, less the whole
-    kinetic energy. Positive:
-    the capsule cannot bring the leg down (first order in the small turn; the kinetic energy is all counted,
-    translation included, so conservative). Not positive when the turn lowers the CG (the capsule falls onto
-    that leg), the footpad lies on the edge's line or a and b coincide."""
+    kinetic energy. Positive: the capsule cannot bring the leg down (first order in the small turn; the
+    kinetic energy is all counted, translation included, so conservative). Not positive when the turn lowers
+    the CG (the capsule falls onto that leg), the footpad lies on the edge's line or a and b coincide."""
     span = math.sqrt((b[0] - a[0]) ** 2 + (b[1] - a[1]) ** 2 + (b[2] - a[2]) ** 2)
     if not span > 0.0:
         return -1.0

@@ -1,6 +1,7 @@
 """What soil costs the landing simulator: the lunar lander's nominal landing (examples/terrain/lunar_regolith.toml,
 8 kg footpads) on rigid ground, on each shipped soil, and its error against the same landing at rtol 1e-10.
-Median of 7 timed runs after a warm-up (terrain_cost._timed), one core; ms per simulated second (landings end at their outcome).
+Median of 7 timed runs after a warm-up (terrain_cost._timed), one core; ms per simulated second (landings end
+at their outcome).
 Usage: python benchmarks/soil_cost.py [--json FILE]
 """
 

@@ -5,7 +5,6 @@ import math
 
 import numpy as np
 import pytest
-from numba import njit
 from scipy.integrate import quad, solve_ivp
 
 from alightsize_sim import soil as sl
@@ -89,17 +88,6 @@ def test_plowing_force_against_a_hand_computed_case():
     assert sl.plowing_force(s, 0.5, 0.0) == 0.0
     clay = Soil(0.5, 0.0, 1e6, 2000.0, 0.0, 18e3).packed                  # phi = 0: N_phi = 1
     assert sl.plowing_force(clay, 2.0, 0.3) == pytest.approx(2.0 * (0.5 * 18e3 * 0.09 + 2 * 2000.0 * 0.3), rel=1e-12)
-
-
-def test_kernels_compile_into_numba_code():
-    @njit
-    def stop_and_plow(s, area, b, energy):
-        z = sl.sinkage_depth(s, area, b, energy)
-        return z, sl.normal_force(s, area, b, z), sl.plowing_force(s, b, z)
-
-    z, f, p = stop_and_plow(LUNAR.packed, AREA, B, 500.0)
-    assert z == sl.sinkage_depth(LUNAR.packed, AREA, B, 500.0)
-    assert f == sl.normal_force(LUNAR.packed, AREA, B, z) and p == sl.plowing_force(LUNAR.packed, B, z)
 
 
 def test_presets_equal_the_cited_table_in_si():

@@ -13,6 +13,7 @@ from alightsize_sim.telescoping_leg import TelescopingLeg
 from alightsize.cli import main
 from alightsize.common.resources import data_dir
 from alightsize.model.scene_config import read_scene
+from alightsize.model.soils import soil_presets
 
 G = 9.80665
 MASS, V, PAD_MASS, DIAMETER = 1000.0, 3.0, 10.0, 0.5
@@ -49,12 +50,12 @@ def test_a_pad_sinks_into_constant_bearing_pressure_as_the_closed_form():
     assert -res.footpad[k, :, 2] == pytest.approx(np.full(4, 0.5 * a_p * t1 ** 2), rel=1e-6)
 
 
-@pytest.mark.parametrize("soil", [Soil.rigid_plastic(P0), Soil(1.0, 1.4e3, 820e3, 170.0, np.radians(35.0), 2430.0)],
+@pytest.mark.parametrize("soil", [Soil.rigid_plastic(P0), soil_presets()["lunar-regolith"]],
                          ids=["constant", "bekker"])
 def test_a_pad_stops_where_the_soil_work_equals_its_energy_and_energy_closes(soil):
     """At rest, the footpads' depths are those at which the soil's work equals the energy it took: the sum of
-    sinkage_work (closed form, A (k_c/b + k_phi) s^(n+1)/(n+1), b the pad's radius) over the four final depths equals the soil's
-    work integrated with the state from its power R(s) w, to 1e-6. The stiff legs ring, so each footpad leaves
+    sinkage_work (closed form, A (k_c/b + k_phi) s^(n+1)/(n+1), b the pad's radius) over the four final depths
+    equals the soil's work integrated with the state from its power R(s) w, to 1e-6. The stiff legs ring, so each footpad leaves
     and re-enters its hole many times: the legs, identical, are switched one per step when they cross together,
     which parts their depths by up to 1e-3. The energy audit closes to 1e-6 at rtol 1e-10."""
     res = simulate(_scene(soil), CTL)
