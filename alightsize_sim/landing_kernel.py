@@ -56,7 +56,7 @@ GTOL = 1e-12       # m: a contact event function this close above zero counts as
 ARM = 1e-7          # m: a leg's next switch is armed once it is this far from its last one
 LOCKED = -1         # armed[i]: a leg that left at once on touching stays unarmed until it touches again
 BAND = 1e-4         # m: an unarmed leg switches only this far past zero (grazing contact never chatters)
-FACE_GAP = 1e-3     # m: a footpad touching down this far above the surface under it met a vertical face
+FACE_GAP = 1e-3     # m: an armed footpad touching down this far above the surface under it met a vertical face
 PATH_FLOOR = 100.0  # event_tol: steps this short or shorter skip the footpad path error (_error_norm)
 
 
@@ -306,6 +306,7 @@ def switch(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, which, las
     FORCE's ZETA)."""
     Pt, slt, dt, ft, Xt, mt, rt = work
     R = quat_matrix(y[6:10])
+    was_armed = armed[which] > 0
     armed[which] = 0
     C = mem.shape[1]
     v = (y[3], y[4], y[5])
@@ -321,8 +322,9 @@ def switch(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, which, las
         pad = free_footpad(geo, cells, which, mem[which], shape[which], y[0:3], R)
         top = pad_ground(mu, y, which, len(contact), geo[9], pad[0], pad[1])
         # A footpad touching down on the surface sits on it; one whose clearance jumped (swept into a step's
-        # riser or a box's side) is caught on that face where it is and held there until it lifts off.
-        on_face = pad[2] - top > FACE_GAP
+        # riser or a box's side) is caught on that face where it is and held there until it lifts off. An
+        # unarmed footpad touches only BAND inside the surface: still above it, it met a face at the surface.
+        on_face = pad[2] - top > (FACE_GAP if was_armed else -0.5 * BAND)
         P[which, 0], P[which, 1], P[which, 2] = pad[0], pad[1], pad[2] if on_face else top
         contact[which] = 1
         sliding[which] = FACE if on_face else 1                 # (re)contact slides on mu_D (eq. 33)

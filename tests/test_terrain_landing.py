@@ -119,3 +119,18 @@ def test_a_footpad_swept_into_a_box_side_is_caught_on_the_face(mass):
     packed = pack(scene.terrain)
     gaps = [res.footpad[k, i, 2] - height(packed, *res.footpad[k, i, :2]) for k, i in zip(*np.nonzero(res.contact))]
     assert max(gaps) > FACE_GAP
+
+
+@pytest.mark.parametrize("k", [261, 405])
+def test_a_free_footpad_swept_into_a_box_base_at_ground_level_is_caught_on_the_face(k):
+    """Random landings 261 and 405 of the massless terrain sweep: a free footpad skimming the ground (unarmed,
+    so it touches only BAND inside the surface) is swept into a box's base. Its clearance jumps there while the
+    footpad is still above the lower ground, within FACE_GAP of it; put down on that ground it was beyond its
+    leg's reach, left at once and touched again at the same instant (53,000 and 696,000 events until the
+    watchdog failed the run). Caught on the face, the landings run to their outcome in 157 and 383 events; the
+    bound of 2,000 leaves a factor 5 over them and is 25 times below the chatter. Energy audit below 1e-4."""
+    base = read_scene(SCENES / "telescoping_config1.toml")
+    scene = random_landing(base.scene, 20261121, k, True)
+    res = simulate(scene, dataclasses.replace(base.controls, t_final=1.0))
+    assert res.status != "failed" and res.energy["closure_rel"] < 1e-4
+    assert res.events < 2000
