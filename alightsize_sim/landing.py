@@ -244,6 +244,7 @@ def initial_state(scene: Scene, run: _Run) -> np.ndarray:
     r0 = np.array([0.0, 0.0, -heights.min()])
     y0 = np.concatenate([r0, scene.v0, scene.q0, scene.omega0, np.zeros(run.ny - 13)])
     for i in np.where(heights - heights.min() <= 1e-12)[0]:
+        run.armed[i] = 1                       # placed on the surface: a touchdown at zero, not BAND inside it
         lk.switch(run.geo, run.cells, run.mu, run.mem, run.contact, run.P, run.sliding, run.shape, run.armed, y0,
                   int(i), run.last, run.work)
     return y0
