@@ -323,7 +323,8 @@ def switch(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, which, las
         top = pad_ground(mu, y, which, len(contact), geo[9], pad[0], pad[1])
         # A footpad touching down on the surface sits on it; one whose clearance jumped (swept into a step's
         # riser or a box's side) is caught on that face where it is and held there until it lifts off. An
-        # unarmed footpad touches only BAND inside the surface: still above it, it met a face at the surface.
+        # unarmed footpad touches only BAND inside the surface (located within BAND / 2 below 50 m/s at the
+        # default event_tol): still above it, it met a face at the surface.
         on_face = pad[2] - top > (FACE_GAP if was_armed else -0.5 * BAND)
         P[which, 0], P[which, 1], P[which, 2] = pad[0], pad[1], pad[2] if on_face else top
         contact[which] = 1
