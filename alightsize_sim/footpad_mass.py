@@ -281,14 +281,14 @@ def _soil_switch(mu, y, i, n, P, face, down, Xt, R, terrain):
     y[k + 3] = RIGID
     if not down:
         return
-    # Its hole: within its radius, and the ground it landed on is the hole's bottom (not a lower level below it).
-    in_hole = _hole(mu, y, i, n, P[i, 0], P[i, 1], np.inf) <= P[i, 2] + 1e-12
     if face:          # caught on a face (a riser, a rock's side, its hole's wall): held, rigid; its hole, kept,
         return        # moves under it (a footpad leaving a face over its hole's wall can land in the hole again)
     kind = features_at(terrain, P[i, 0], P[i, 1])[0]
-    if kind == HEMISPHERE or kind == BOX or not in_hole:               # a rock (rigid) or fresh ground
+    rock = kind == HEMISPHERE or kind == BOX
+    # Fresh ground unless it landed in its hole: within its radius, on the hole's bottom (not a lower level).
+    if rock or _hole(mu, y, i, n, P[i, 0], P[i, 1], np.inf) > P[i, 2] + 1e-12:
         y[k], y[k + 2] = 0.0, P[i, 2]
-    if kind == HEMISPHERE or kind == BOX:
+    if rock:                                                            # rocks are rigid
         return
     fe = mv(R, Xt[i, 0], Xt[i, 1], Xt[i, 2])
     y[k + 3] = SINKING if fe[2] > _bearing(mu, y[k]) + FLOOR else HELD

@@ -1,15 +1,15 @@
 """The compiled step loop of a landing (AFFDL-TR-66-33 Sec. V; the report used Runge-Kutta-Merson).
 
-State y = (r, v terrain axes; q principal -> terrain; omega principal axes; W the work the legs took from
-the capsule). Dormand-Prince 5(4) with error control (or fixed steps) advances it; the error control also bounds the path
-error of sliding footpads (footpad_slip). Discrete memory lives in
-arrays the caller owns and changes only when a step is accepted (`_commit`): cell maxima, footpad positions
-and slip state, contact flags. Touchdown, lift-off, stick-to-slip, a cell's turn from loading to unloading (its
-largest stroke) and its passing a corner of its loading curve are located to `event_tol` seconds:
-first on the step's continuous extension (leg evaluations only), then by real trial steps aimed just short of
-the crossing, the step accepted before it; a trial step that fails the error test rejects the step. When no
-leg touches an axisymmetric capsule a step is the closed-form free flight (eq. 62-88) instead. The loop returns
-to the caller on a status: the end time, a full history buffer, or an outcome it detects (bottoming, tip angle, body contact, quiescence, the energy criterion).
+State y = (r, v terrain axes; q principal -> terrain; omega principal axes; W the work the legs took from the
+capsule). Dormand-Prince 5(4) with error control (or fixed steps) advances it; the error control also bounds the
+path error of sliding footpads (footpad_slip). Discrete memory lives in arrays the caller owns and changes only
+when a step is accepted (`_commit`): cell maxima, footpad positions and slip state, contact flags. Touchdown,
+lift-off, stick-to-slip, a cell's turn from loading to unloading (its largest stroke) and its passing a corner of
+its loading curve are located to `event_tol` seconds: first on the step's continuous extension (leg evaluations
+only), then by real trial steps aimed just short of the crossing, the step accepted before it; a trial step that
+fails the error test rejects the step. When no leg touches an axisymmetric capsule a step is the closed-form free
+flight (eq. 62-88) instead. The loop returns to the caller on a status: the end time, a full history buffer, or an
+outcome it detects (bottoming, tip angle, body contact, quiescence, the energy criterion).
 """
 
 from __future__ import annotations

@@ -55,9 +55,9 @@ def test_a_pad_sinks_into_constant_bearing_pressure_as_the_closed_form():
 def test_a_pad_stops_where_the_soil_work_equals_its_energy_and_energy_closes(soil):
     """At rest, the footpads' depths are those at which the soil's work equals the energy it took: the sum of
     sinkage_work (closed form, A (k_c/b + k_phi) s^(n+1)/(n+1), b the pad's radius) over the four final depths
-    equals the soil's work integrated with the state from its power R(s) w, to 1e-6. The stiff legs ring, so each footpad leaves
-    and re-enters its hole many times: the legs, identical, are switched one per step when they cross together,
-    which parts their depths by up to 1e-3. The energy audit closes to 1e-6 at rtol 1e-10."""
+    equals the soil's work integrated with the state from its power R(s) w, to 1e-6. The stiff legs ring, so each
+    footpad leaves and re-enters its hole many times: the legs, identical, are switched one per step when they cross
+    together, which parts their depths by up to 1e-3. The energy audit closes to 1e-6 at rtol 1e-10."""
     res = simulate(_scene(soil), CTL)
     assert res.status in ("stable", "end")
     depth = -res.footpad[-1, :, 2]
