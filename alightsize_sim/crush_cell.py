@@ -46,7 +46,7 @@ class CellModel:
                 self.k, self.c, -1.0 if self.yield_force is None else self.yield_force)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def loading_force(d: np.ndarray, f: np.ndarray, yield_force: float, delta: float) -> float:
     """Force on the loading curve at deflection delta, bottoming branch included."""
     if delta <= 0.0:
@@ -63,7 +63,7 @@ def loading_force(d: np.ndarray, f: np.ndarray, yield_force: float, delta: float
     return f[-1] + slope * (delta - d[-1])
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def force(d, f, k, c, yield_force, dmax, fmax, delta, rate) -> float:
     """Cell force at deflection delta and rate (1/s of deflection), given the committed (dmax, fmax)."""
     if delta >= dmax:

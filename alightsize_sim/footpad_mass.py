@@ -81,7 +81,7 @@ def n_states(n: int, C: int, soil: bool = False) -> int:
     return NB + 4 * n + 2 + n * C + (4 * n + 1 if soil else 0)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _sink_at(y, n, i):
     """Index of footpad i's soil block (s, w, z0, mode) in y (on soil only); the soil's work is y[-1]."""
     return len(y) - 4 * n - 1 + 4 * i
@@ -301,7 +301,7 @@ def pad_ground(mu, y, i, n, terrain, x, yy):
     return _hole(mu, y, i, n, x, yy, top) if isinstance(mu, PadModel) else top
 
 
-@overload(pad_ground)
+@overload(pad_ground, inline="always")
 def _pad_ground(mu, y, i, n, terrain, x, yy):
     if is_pad(mu):
         return lambda mu, y, i, n, terrain, x, yy: _hole(mu, y, i, n, x, yy, height(terrain, x, yy))

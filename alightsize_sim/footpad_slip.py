@@ -73,7 +73,7 @@ def contact_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, def
                                                 frc, rte, X, y)
 
 
-@overload(contact_force)
+@overload(contact_force, inline="always")
 def _contact_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, frc, rte, X, y):
     if isinstance(mu, types.NoneType):
         return _held
@@ -92,7 +92,7 @@ def _slipping(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, f
     return sl, power, alpha, beta, psi, margin, deficit, path, 1.0
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
     """(FE12, FE3, FE1, FE2, cells' power, alpha, beta, psi) with the footpad at P."""
     power, alpha, beta, psi = leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)

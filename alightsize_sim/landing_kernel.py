@@ -124,7 +124,9 @@ def cell_event(cells, cev, which, n):
         cev[i, j, 1] = _next_corner(cells, i, j, cells[0][i, j, cev[i, j, 1]], cev[i, j, 1])
 
 
-@njit(cache=True)
+# Inlined (numba IR level) like the leg dispatch it calls (legs.leg_force, footpad_slip.contact_force): each array
+# passed to a compiled function that is not inlined costs a few ns, and a leg evaluation passes about 30.
+@njit(cache=True, inline="always")
 def _legs(geo, cells, mu, mem, contact, P, sliding, shape, y, Pt, slt, dt, ft, Xt, mt, rt, R):
     """Footpad, slip state, forces and mt = (static margin, reach deficit, alpha, beta, psi, footpad path error,
     soil event value)

@@ -61,6 +61,9 @@ def initial_shape(legs) -> np.ndarray:
     return np.array([[0.0, 0.0, leg.psi0 if isinstance(leg, ArticulatedLeg) else 0.0] for leg in legs])
 
 
+# The dispatch overloads below are inlined at numba IR level: a call that is not inlined copies the ~30 arrays of
+# the packed scene (2x the cost of a telescoping leg's right-hand side). Small helpers are left to LLVM's inliner;
+# IR-inlining them inside these bodies multiplied the compile time.
 def _pick(geo, mixed, name: str):
     """What compiled code runs for a packed geo's numba type: `mixed` (the per-leg test) when it holds both leg
     kinds, else the one kind's function `name` (the other kind's arrays are None)."""
@@ -78,12 +81,12 @@ def leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
     return telescoping_leg.leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
 
 
-@overload(leg_force)
+@overload(leg_force, inline="always")
 def _leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
     return _pick(geo, leg_force, "leg_force")
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def main_set(cells, i, mem):
     """Permanent set of the leg's main cell (m): short of it the leg is slack and lifts off."""
     return crush_cell.permanent_set(cells[3][i, 0], mem[0, 0], mem[0, 1])
@@ -96,7 +99,7 @@ def free_footpad(geo, cells, i, mem, shape, r, R):
     return telescoping_leg.free_footpad(geo, cells, i, mem, shape, r, R)
 
 
-@overload(free_footpad)
+@overload(free_footpad, inline="always")
 def _free_footpad(geo, cells, i, mem, shape, r, R):
     return _pick(geo, free_footpad, "free_footpad")
 

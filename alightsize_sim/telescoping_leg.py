@@ -56,7 +56,7 @@ def leg_frame(alpha, beta):
     return (sa * cb, sa * sb, -ca), (ca * cb, ca * sb, sa), (-sb, cb, 0.0)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def cell_force(cells, i, j, mem, delta, rate):
     """Force of cell j of leg i at deflection delta and rate, given its committed memory."""
     cd, cf, cn, ck, cc, cy = cells
@@ -115,7 +115,7 @@ def leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
     return power, alpha, beta, 0.0
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def axial_set(cells, i, mem):
     """Permanent set of the axial cell (m)."""
     return crush_cell.permanent_set(cells[3][i, 0], mem[0, 0], mem[0, 1])
