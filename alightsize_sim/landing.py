@@ -173,6 +173,7 @@ class _Run:
         self.energy = np.zeros((n, C))
         self.last = np.zeros((n, 2 * C + 1))
         self.work = lk.new_work(n, C)
+        self.scratch = lk.new_scratch(n, C, self.ny)
         self.cev = lk.cell_events(self.cells, self.mem)
         self.cnt = np.zeros(6, np.int64)
         self.run_state = np.array([ctl.first_step, 0.0, 0.0, -1.0, -1.0, -1.0, -1.0, -1.0])
@@ -229,7 +230,7 @@ class _Run:
                                s.body_points, self.order, self.mem, self.contact, self.P, self.sliding, self.shape,
                                self.armed, self.cev, self.energy, self.last, y, t, self.ctl_arr, self.cnt,
                                self.run_state, self.H_t, self.H_y, self.H_dy, self.H_d, self.H_f, self.H_X, self.H_P,
-                               self.H_c)
+                               self.H_c, self.scratch)
             if status == lk.BUFFER:
                 self._grow(2 * len(self.H_t))
             else:

@@ -18,6 +18,7 @@ import numpy as np
 from numba import njit
 
 from . import crush_cell
+from .borrow import borrowed
 from .footpad_mass import (FACE, FLOOR, integrates_dampers, pad_event, pad_ground, pad_rates, pad_settle, pad_switch,
                            sink_event)
 from .footpad_slip import contact_force, slip_events
@@ -80,6 +81,16 @@ def new_work(n, C):
     """Leg state arrays of one evaluation for n legs of up to C cells (Pt, slt, dt, ft, Xt, mt, rt)."""
     return (np.zeros((n, 3)), np.zeros(n, np.int64), np.zeros((n, C)), np.zeros((n, C)), np.zeros((n, 3)),
             np.zeros((n, N_MT)), np.zeros((n, C)))
+
+
+@njit(cache=True)
+def new_scratch(n, C, ny):
+    """The step loop's working arrays, owned by its caller (run borrows them): stages K, the step's end, its error,
+    event values (before, after, at the bracket's lower end), the state there and at a trial point, the search's
+    values (at the point, the bracket's ends) and two leg-state sets (work, at the lower end)."""
+    n_g = n_events(n, C)
+    return (np.zeros((7, ny)), np.empty(ny), np.empty(ny), np.empty(n_g), np.empty(n_g), np.empty(n_g), np.empty(ny),
+            np.empty(ny), np.empty(n_g), np.empty(n_g), np.empty(n_g), new_work(n, C), new_work(n, C))
 
 
 @njit(cache=True)
@@ -525,19 +536,17 @@ def _copy_work(src, dst):
 
 @njit(cache=True)
 def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem, contact, P, sliding, shape, armed,
-        cev, energy, last, y, t, ctl, cnt, run_state, H_t, H_y, H_dy, H_d, H_f, H_X, H_P, H_c):
+        cev, energy, last, y, t, ctl, cnt, run_state, H_t, H_y, H_dy, H_d, H_f, H_X, H_P, H_c, scratch):
     """Advance the landing from (t, y) until t_final or a status; y, t and every memory array are updated in
-    place. Returns (status, t)."""
+    place; scratch is new_scratch's. Returns (status, t). Every array is used through a view without reference
+    counts (borrow.py): the caller holds them all for the call."""
+    geo, cells, inertia, gravity, bottoming, up, body, order, mem, contact, P, sliding, shape, armed, cev, energy, \
+        last, y, ctl, cnt, run_state, H_t, H_y, H_dy, H_d, H_f, H_X, H_P, H_c, mu = borrowed(
+            (geo, cells, inertia, gravity, bottoming, up, body, order, mem, contact, P, sliding, shape, armed, cev,
+             energy, last, y, ctl, cnt, run_state, H_t, H_y, H_dy, H_d, H_f, H_X, H_P, H_c, mu))
+    K, y1, err, g_prev, g1, g_lo, y_lo, yt, gm, ga, gb, work, work_lo = borrowed(scratch)
     n, n_cell = mem.shape[0], mem.shape[1]
-    ny = len(y)
-    K = np.zeros((7, ny))
-    y1, err = np.empty(ny), np.empty(ny)
-    n_g = n_events(n, n_cell)
-    g_prev, g1, g_lo = np.empty(n_g), np.empty(n_g), np.empty(n_g)
-    work, work_lo = new_work(n, n_cell), new_work(n, n_cell)
     Pt, slt, dt, ft, Xt, mt, rt = work
-    y_lo, yt = np.empty(ny), np.empty(ny)
-    gm, ga, gb = np.empty(n_g), np.empty(n_g), np.empty(n_g)
     args = (geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape)
     rhs(*args, y, K[0], *work)
     cnt[K_RHS] += 1
