@@ -252,8 +252,8 @@ def run_bench(quick: bool = False, progress=print, only: tuple[str, ...] = ()) -
     for cfg, t_sim, ref_kw in scenes:
         ref = _metrics(simulate(cfg.scene, _controls(cfg, t_sim, **ref_kw)))
         references[cfg.name] = ref_kw
-        # the speed targets in ms per simulated second: 20 for a telescoping landing, 50 for an articulated one
-        goal[cfg.name] = 50.0 if any(isinstance(leg, ArticulatedLeg) for leg in cfg.scene.legs) else 20.0
+        # the speed targets in ms per simulated second: 10 for a telescoping landing, 50 for an articulated one
+        goal[cfg.name] = 50.0 if any(isinstance(leg, ArticulatedLeg) for leg in cfg.scene.legs) else 10.0
         check = _metrics(simulate(cfg.scene, _controls(cfg, t_sim, **_coarser(ref_kw))))
         uncertainty[cfg.name] = _errors(check, ref)
         span = t_sim or ref["t_end"]
