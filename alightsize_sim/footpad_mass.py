@@ -301,7 +301,7 @@ def pad_ground(mu, y, i, n, terrain, x, yy):
     return _hole(mu, y, i, n, x, yy, top) if isinstance(mu, PadModel) else top
 
 
-@overload(pad_ground, inline="always")
+@overload(pad_ground)
 def _pad_ground(mu, y, i, n, terrain, x, yy):
     if is_pad(mu):
         return lambda mu, y, i, n, terrain, x, yy: _hole(mu, y, i, n, x, yy, height(terrain, x, yy))

@@ -135,9 +135,7 @@ def cell_event(cells, cev, which, n):
         cev[i, j, 1] = _next_corner(cells, i, j, cells[0][i, j, cev[i, j, 1]], cev[i, j, 1])
 
 
-# Inlined (numba IR level) like the leg dispatch it calls (legs.leg_force, footpad_slip.contact_force): each array
-# passed to a compiled function that is not inlined costs a few ns, and a leg evaluation passes about 30.
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _legs(geo, cells, mu, mem, contact, P, sliding, shape, y, Pt, slt, dt, ft, Xt, mt, rt, R):
     """Footpad, slip state, forces and mt = (static margin, reach deficit, alpha, beta, psi, footpad path error,
     soil event value)
@@ -314,6 +312,12 @@ def _commit(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, ener
 
 
 @njit(cache=True)
+def _leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
+    """legs.leg_force as a call, for the rare paths (a touchdown, a lift-off): the step's paths inline it."""
+    return leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
+
+
+@njit(cache=True)
 def switch(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, which, last, work):
     """Touchdown (the footpad holds where it landed) or lift-off (the shape is stored for recontact: eq. 13,
     FORCE's ZETA)."""
@@ -324,7 +328,7 @@ def switch(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, which, las
     C = mem.shape[1]
     v = (y[3], y[4], y[5])
     if contact[which]:
-        _, alpha, beta, psi = leg_force(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R, v,
+        _, alpha, beta, psi = _leg_force(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R, v,
                                         y[10:13], dt[which], ft[which], rt[which], Xt[which])
         contact[which] = 0
         pad_switch(mu, y, which, P, sliding, False, Xt, R, geo[9])
@@ -342,7 +346,7 @@ def switch(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, which, las
         P[which, 0], P[which, 1], P[which, 2] = pad[0], pad[1], pad[2] if on_face else top
         contact[which] = 1
         sliding[which] = FACE if on_face else 1                 # (re)contact slides on mu_D (eq. 33)
-        leg_force(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R, v, y[10:13], dt[which],
+        _leg_force(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R, v, y[10:13], dt[which],
                   ft[which], rt[which], Xt[which])
         pad_switch(mu, y, which, P, sliding, True, Xt, R, geo[9])
         for j in range(C):

@@ -99,7 +99,7 @@ def free_footpad(geo, cells, i, mem, shape, r, R):
     return telescoping_leg.free_footpad(geo, cells, i, mem, shape, r, R)
 
 
-@overload(free_footpad, inline="always")
+@overload(free_footpad)
 def _free_footpad(geo, cells, i, mem, shape, r, R):
     return _pick(geo, free_footpad, "free_footpad")
 
