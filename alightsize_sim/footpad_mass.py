@@ -81,7 +81,7 @@ def n_states(n: int, C: int, soil: bool = False) -> int:
     return NB + 4 * n + 2 + n * C + (4 * n + 1 if soil else 0)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _sink_at(y, n, i):
     """Index of footpad i's soil block (s, w, z0, mode) in y (on soil only); the soil's work is y[-1]."""
     return len(y) - 4 * n - 1 + 4 * i

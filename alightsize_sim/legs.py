@@ -61,9 +61,9 @@ def initial_shape(legs) -> np.ndarray:
     return np.array([[0.0, 0.0, leg.psi0 if isinstance(leg, ArticulatedLeg) else 0.0] for leg in legs])
 
 
-# The dispatch overloads below are inlined at numba IR level: a call that is not inlined copies the ~30 arrays of
-# the packed scene (2x the cost of a telescoping leg's right-hand side). Small helpers are left to LLVM's inliner;
-# IR-inlining them inside these bodies multiplied the compile time.
+# leg_force's dispatch is inlined at numba IR level (as is footpad_slip.contact_force around it): a call that is
+# not inlined passes the ~30 arrays of the packed scene, which cost as much as a telescoping leg's arithmetic.
+# Small helpers are left to LLVM's inliner; IR-inlining them inside these bodies multiplied the compile time.
 def _pick(geo, mixed, name: str):
     """What compiled code runs for a packed geo's numba type: `mixed` (the per-leg test) when it holds both leg
     kinds, else the one kind's function `name` (the other kind's arrays are None)."""
@@ -86,7 +86,7 @@ def _leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
     return _pick(geo, leg_force, "leg_force")
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def main_set(cells, i, mem):
     """Permanent set of the leg's main cell (m): short of it the leg is slack and lifts off."""
     return crush_cell.permanent_set(cells[3][i, 0], mem[0, 0], mem[0, 1])

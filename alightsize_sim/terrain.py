@@ -134,7 +134,7 @@ def pack(terrain: Terrain) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarr
             np.array(boxes, float).reshape(-1, 7), np.ascontiguousarray(field, float))
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def is_plane(packed) -> bool:
     """Whether the packed terrain is the plain plane z = 0."""
     return (packed[0].shape[0] == 0 and packed[1].shape[0] == 0 and packed[2].shape[0] == 0
@@ -191,13 +191,13 @@ def _top(packed, x: float, y: float):
     return base + z, n0, n1, n2, kind, index
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def height(packed, x: float, y: float) -> float:
     """z of the surface at (x, y)."""
     return 0.0 if is_plane(packed) else _top(packed, x, y)[0]
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def surface(packed, x: float, y: float):
     """(z, n0, n1, n2): height and unit outward normal of the feature on top at (x, y) ((0, 0, 1) on flat parts)."""
     if is_plane(packed):
@@ -206,7 +206,7 @@ def surface(packed, x: float, y: float):
     return z, n0, n1, n2
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def clearance(packed, p0: float, p1: float, p2: float) -> float:
     """Vertical clearance p2 - height(p0, p1) of the point p."""
     return p2 - height(packed, p0, p1)
