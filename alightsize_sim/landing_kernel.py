@@ -312,7 +312,7 @@ def _commit(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, ener
 
 
 @njit(cache=True)
-def _leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
+def _leg_force_call(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
     """legs.leg_force as a call, for the rare paths (a touchdown, a lift-off): the step's paths inline it."""
     return leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
 
@@ -328,8 +328,8 @@ def switch(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, which, las
     C = mem.shape[1]
     v = (y[3], y[4], y[5])
     if contact[which]:
-        _, alpha, beta, psi = _leg_force(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R, v,
-                                        y[10:13], dt[which], ft[which], rt[which], Xt[which])
+        _, alpha, beta, psi = _leg_force_call(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R,
+                                              v, y[10:13], dt[which], ft[which], rt[which], Xt[which])
         contact[which] = 0
         pad_switch(mu, y, which, P, sliding, False, Xt, R, geo[9])
         shape[which, 0], shape[which, 1], shape[which, 2] = lift_shape(geo, cells, which, mem[which], alpha, beta, psi,
@@ -346,8 +346,8 @@ def switch(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, which, las
         P[which, 0], P[which, 1], P[which, 2] = pad[0], pad[1], pad[2] if on_face else top
         contact[which] = 1
         sliding[which] = FACE if on_face else 1                 # (re)contact slides on mu_D (eq. 33)
-        _leg_force(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R, v, y[10:13], dt[which],
-                  ft[which], rt[which], Xt[which])
+        _leg_force_call(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R, v, y[10:13], dt[which],
+                        ft[which], rt[which], Xt[which])
         pad_switch(mu, y, which, P, sliding, True, Xt, R, geo[9])
         for j in range(C):
             last[which, j], last[which, C + j] = dt[which, j], 0.0
