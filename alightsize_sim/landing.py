@@ -14,7 +14,7 @@ import numpy as np
 
 from . import crush_cell
 from . import landing_kernel as lk
-from .rigid_body import quat_matrix
+from .rigid_body import quat_matrices, quat_matrix
 from .stability import quiescence_momenta
 from .articulated_leg import ArticulatedLeg
 from .footpad_mass import NB, PadModel, n_states, pad_model
@@ -121,7 +121,7 @@ def accel_g(y: np.ndarray, dy: np.ndarray, gravity: np.ndarray) -> np.ndarray:
     """CG acceleration less gravity (what an accelerometer reads) in principal axes, multiples of g0, for
     states y and derivatives dy (rows)."""
     y, dy = np.atleast_2d(y), np.atleast_2d(dy)
-    R = np.array([quat_matrix(q) for q in y[:, 6:10]])
+    R = quat_matrices(np.ascontiguousarray(y[:, 6:10]))
     return np.einsum("nji,nj->ni", R, dy[:, 3:6] - gravity) / G0
 
 

@@ -25,6 +25,15 @@ def quat_matrix(q: np.ndarray) -> np.ndarray:
     return m
 
 
+@njit(cache=True)
+def quat_matrices(Q: np.ndarray) -> np.ndarray:
+    """quat_matrix of every row of Q (n, 4): (n, 3, 3)."""
+    out = np.empty((Q.shape[0], 3, 3))
+    for k in range(Q.shape[0]):
+        out[k] = quat_matrix(Q[k])
+    return out
+
+
 def matrix_quat(m: np.ndarray) -> np.ndarray:
     """Unit quaternion (w >= 0) of a rotation matrix (Shepperd's method: well conditioned everywhere)."""
     tr = np.trace(m)

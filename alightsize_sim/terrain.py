@@ -220,6 +220,16 @@ def features_at(packed, x: float, y: float):
     return kind, index
 
 
+@njit(cache=True)
+def features_along(packed, xy):
+    """features_at for every row (x, y) of xy: (kinds, indices) arrays."""
+    kinds, indices = np.full(xy.shape[0], PLANE), np.full(xy.shape[0], -1)
+    if not is_plane(packed):
+        for k in range(xy.shape[0]):
+            kinds[k], indices[k] = features_at(packed, xy[k, 0], xy[k, 1])
+    return kinds, indices
+
+
 def _uniform(rng: np.random.Generator, bounds: tuple[float, float]) -> float:
     return float(rng.uniform(bounds[0], bounds[1]))
 

@@ -4,7 +4,8 @@ import numpy as np
 import pytest
 
 from alightsize_sim.terrain import (BOX, HEIGHT_FIELD, HEMISPHERE, PLANE, STEP, Box, HeightField, Hemisphere, Step,
-                                    Terrain, clearance, features_at, height, is_plane, pack, random_feature, surface)
+                                    Terrain, clearance, features_along, features_at, height, is_plane, pack,
+                                    random_feature, surface)
 
 EXACT = 1e-12           # closed forms evaluated in a few flops of values O(1): round-off is ~1e-15
 
@@ -95,6 +96,17 @@ def test_union_takes_the_max():
             kind, index = features_at(packed, x, y)
             if max(parts) - sorted(parts)[1] > EXACT:                  # a clear top (ties go to round-off)
                 assert [(HEMISPHERE, 0), (HEMISPHERE, 1), (BOX, 0)][int(np.argmax(parts))] == (kind, index)
+
+
+def test_features_along_a_track_are_features_at_each_point():
+    """The batch lookup used on footpad tracks: each point's (kind, index) as the scalar one gives it, the plane
+    included."""
+    xy = np.stack(np.meshgrid(np.linspace(-1.2, 1.2, 25), np.linspace(-0.3, 0.3, 7)), axis=-1).reshape(-1, 2)
+    for terrain in (Terrain(), Terrain(steps=(Step(0.3, 0.0, 90.0, 0.1),), hemispheres=(Hemisphere(0.0, 0.0, 0.5),),
+                                       boxes=(Box(0.6, 0.0, 0.4, 0.2, 0.3),))):
+        packed = pack(terrain)
+        kinds, indices = features_along(packed, xy)
+        assert list(zip(kinds, indices)) == [features_at(packed, x, y) for x, y in xy]
 
 
 def test_rock_sits_on_a_step():

@@ -54,6 +54,7 @@ def dimension_of(q: pint.Quantity) -> tuple[int, int, int]:
     return (int(d.get("[mass]", 0)), int(d.get("[length]", 0)), int(d.get("[time]", 0)))
 
 
+@lru_cache(maxsize=4096, typed=True)
 def parse(text: str | float | int, dim: str) -> float:
     """Parse "3750 lbf" into SI for dimension `dim`; raise ValueError with a readable reason.
 

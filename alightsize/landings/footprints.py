@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from alightsize_sim.landing import Result, Scene
-from alightsize_sim.terrain import BOX, HEIGHT_FIELD, HEMISPHERE, STEP, features_at
+from alightsize_sim.terrain import BOX, HEIGHT_FIELD, HEMISPHERE, STEP, features_along
 from alightsize_sim.terrain import pack as pack_terrain
 
 KIND_NAMES = {STEP: "step", HEMISPHERE: "hemisphere rock", BOX: "box rock", HEIGHT_FIELD: "height field"}
@@ -17,9 +17,12 @@ def features_met(scene: Scene, res: Result) -> list[list[str]]:
     packed = pack_terrain(scene.terrain)
     out = []
     for i in range(len(scene.legs)):
-        met: list[str] = []
-        for k in np.flatnonzero(res.contact[:, i]):
-            kind, index = features_at(packed, float(res.footpad[k, i, 0]), float(res.footpad[k, i, 1]))
+        on = res.contact[:, i] > 0
+        kinds, indices = features_along(packed, np.ascontiguousarray(res.footpad[on, i, :2]))
+        pairs = np.stack([kinds, indices], axis=1)
+        _, first = np.unique(pairs, axis=0, return_index=True)
+        met = []
+        for kind, index in pairs[np.sort(first)]:
             if kind < 0:
                 name = "plane"
             else:

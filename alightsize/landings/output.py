@@ -12,7 +12,7 @@ import pandas as pd
 
 from alightsize_sim import crush_cell
 from alightsize_sim.landing import Result, kinetic
-from alightsize_sim.rigid_body import quat_matrix, roll_yaw_pitch
+from alightsize_sim.rigid_body import quat_matrices, roll_yaw_pitch
 from alightsize_sim.terrain import height
 from alightsize_sim.terrain import pack as pack_terrain
 
@@ -42,7 +42,7 @@ def nutation_deg(cfg: SceneConfig, res: Result) -> np.ndarray:
     """Nutation (deg) at every history point: the angle of the capsule's up axis from the vertical, the angle the
     tip test compares with `tip_angle` (main program stmt 367)."""
     g = cfg.scene.gravity / np.linalg.norm(cfg.scene.gravity)
-    up = np.array([quat_matrix(q) @ cfg.scene.up for q in res.y[:, 6:10]])
+    up = quat_matrices(np.ascontiguousarray(res.y[:, 6:10])) @ cfg.scene.up
     return np.degrees(np.arccos(np.clip(-up @ g, -1.0, 1.0)))
 
 
@@ -146,7 +146,8 @@ def history_frame(cfg: SceneConfig, res: Result) -> pd.DataFrame:
     for k, ax in enumerate("123"):
         cols[f"omd{ax}_rad_s2"] = omd[:, k]
     to_vertical = cfg.terrain_from_vertical.T
-    att = np.array([roll_yaw_pitch(to_vertical @ quat_matrix(q) @ E.T) for q in res.y[:, 6:10]])
+    attitude = to_vertical @ quat_matrices(np.ascontiguousarray(res.y[:, 6:10])) @ E.T
+    att = np.array([roll_yaw_pitch(m) for m in attitude])
     for k, name in enumerate(("roll", "yaw", "pitch")):
         cols[f"{name}_deg"] = np.degrees(att[:, k])
     for i, leg in enumerate(cfg.scene.legs):
