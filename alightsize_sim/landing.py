@@ -50,7 +50,7 @@ class Scene:
     up: np.ndarray = field(default_factory=lambda: np.array([0.0, 0.0, 1.0]))
     body_points: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))
     footpad_mass: float = 0.0
-    footpad_band: float = 1e-3
+    footpad_band: float = 1e-2
     terrain: Terrain = field(default_factory=Terrain)
     soil: Soil | None = None
     footpad_diameter: float = 0.0

@@ -81,8 +81,8 @@ def test_a_frictionless_slope_keeps_the_momentum_along_it():
 
 
 def test_scene_files_take_a_footpad_mass_and_any_friction_from_zero(tmp_path):
-    """`[legs] footpad_mass` with units (default 0: massless, the report's model); a negative mass is refused
-    with its key path; mu = 0 is a legal (icy) surface."""
+    """`[legs] footpad_mass` and `footpad_band` with units (default 0: massless, the report's model; 1 cm/s); a
+    negative mass or a band not above zero is refused with its key path; mu = 0 is a legal (icy) surface."""
     cfg = read_scene(SCENES / "telescoping_config2.toml", {"legs.footpad_mass": "5 lb", "terrain.mu_static": 0.0,
                                                            "terrain.mu_dynamic": 0.0})
     assert cfg.scene.footpad_mass == pytest.approx(5 * 0.45359237, rel=1e-12)
@@ -92,6 +92,12 @@ def test_scene_files_take_a_footpad_mass_and_any_friction_from_zero(tmp_path):
         read_scene(SCENES / "telescoping_config2.toml", {"legs.footpad_mass": "-1 kg"})
     with pytest.raises(InputError, match="terrain.mu_dynamic"):
         read_scene(SCENES / "telescoping_config2.toml", {"terrain.mu_static": 0.0, "terrain.mu_dynamic": -0.1})
+    # The Karnopp band: 1 cm/s unless given, with units; zero or negative is refused with its key path.
+    assert cfg.scene.footpad_band == 0.01
+    assert read_scene(SCENES / "telescoping_config2.toml", {"legs.footpad_band": "2 mm/s"}).scene.footpad_band == \
+        pytest.approx(0.002, rel=1e-12)
+    with pytest.raises(InputError, match="legs.footpad_band"):
+        read_scene(SCENES / "telescoping_config2.toml", {"legs.footpad_band": "0 m/s"})
 
 
 def test_walking_down_a_35_degree_slope_with_5_lb_footpads_loses_what_a_sliding_block_loses():

@@ -112,9 +112,9 @@ def _legs(node: Node, cells: dict[str, Node]) -> list[dict]:
     if kind == "articulated":
         return _articulated_legs(node, cells)
     node.allow(("kind", "count", "radius", "height", "first_azimuth", "length", "pad_lever", "pad_angles", "axial",
-                "pads", "cell_factors", "small_angle", "footpad_mass", "footpad_diameter", "note"))
+                "pads", "cell_factors", "small_angle", "footpad_mass", "footpad_band", "footpad_diameter", "note"))
     n, radius, height, az0 = _pattern(node)
-    pad_mass, pad_diameter = _footpad_mass(node), _footpad_diameter(node)
+    pad_mass, pad_band, pad_diameter = _footpad_mass(node), _footpad_band(node), _footpad_diameter(node)
     rho = node.quantity("length", "length")
     lever = node.quantity("pad_lever", "length", 0.0, positive=False) if node.has("pad_lever") else 0.0
     angles_raw = node.raw("pad_angles", [])
@@ -134,7 +134,7 @@ def _legs(node: Node, cells: dict[str, Node]) -> list[dict]:
         az = az0 + 2 * np.pi * i / n
         legs.append(dict(kind=kind, attach=np.array([radius * np.cos(az), radius * np.sin(az), height]), rho=rho,
                          lever=lever, angles=angles, axial=axial, pads=pads, small=small, factors=factors[i],
-                         footpad_mass=pad_mass, footpad_diameter=pad_diameter))
+                         footpad_mass=pad_mass, footpad_band=pad_band, footpad_diameter=pad_diameter))
     return legs
 
 
@@ -187,6 +187,11 @@ def _footpad_mass(node: Node) -> float:
     return mass
 
 
+def _footpad_band(node: Node) -> float:
+    """The Karnopp velocity band of footpads with mass (alightsize_sim.footpad_mass; Scene's default)."""
+    return node.quantity("footpad_band", "velocity") if node.has("footpad_band") else Scene.footpad_band
+
+
 def _footpad_diameter(node: Node) -> float:
     """Each footpad's diameter: round footpads bearing on soil (0, the default: not given)."""
     return node.quantity("footpad_diameter", "length") if node.has("footpad_diameter") else 0.0
@@ -204,9 +209,9 @@ def _articulated_legs(node: Node, cells: dict[str, Node]) -> list[dict]:
     """Articulated legs (Sec. V.F): the leg origin (lower inboard parallelogram pivot) at radius and height, S1
     outward along the azimuth, S3 along the roll axis; the geometry of Fig. 22-25 and the initial psi."""
     node.allow(("kind", "count", "radius", "height", "first_azimuth", "geometry", "length_scale", "psi_initial",
-                "upper", "lower", "cell_factors", "footpad_mass", "footpad_diameter", "note"))
+                "upper", "lower", "cell_factors", "footpad_mass", "footpad_band", "footpad_diameter", "note"))
     n, radius, height, az0 = _pattern(node)
-    pad_mass, pad_diameter = _footpad_mass(node), _footpad_diameter(node)
+    pad_mass, pad_band, pad_diameter = _footpad_mass(node), _footpad_band(node), _footpad_diameter(node)
     geometry = read_geometry(node.table("geometry"))
     scale = node.number("length_scale", 1.0)
     geometry = geometry._replace(**{k: scale * getattr(geometry, k) for k in LENGTHS})   # test-model scaling (Table 27)
@@ -222,7 +227,7 @@ def _articulated_legs(node: Node, cells: dict[str, Node]) -> list[dict]:
         az = az0 + 2 * np.pi * i / n
         legs.append(dict(kind="articulated", attach=np.array([radius * np.cos(az), radius * np.sin(az), height]),
                          azimuth=az, geometry=geometry, psi0=psi0, upper=upper, lower=lower, factors=factors[i],
-                         footpad_mass=pad_mass, footpad_diameter=pad_diameter))
+                         footpad_mass=pad_mass, footpad_band=pad_band, footpad_diameter=pad_diameter))
     return legs
 
 
@@ -429,7 +434,7 @@ def read_scene(path: str | Path, overrides: dict[str, object] | None = None) -> 
     scene = Scene(mass, moments, tuple(legs), lepk @ np.array([0.0, 0.0, -g]), lepk @ vel, q0, to_geo.T @ rates,
                   mu_s if mu_s is not None else 1.5e6, mu_d if mu_d is not None else 1.0e6, to_geo.T @ np.array([0.0, 0, 1]),
                   body, leg_specs[0]["footpad_mass"], terrain=features, soil=soil,
-                  footpad_diameter=leg_specs[0]["footpad_diameter"])
+                  footpad_band=leg_specs[0]["footpad_band"], footpad_diameter=leg_specs[0]["footpad_diameter"])
     return SceneConfig(path, name, title, scene, c, to_geo, lepk, interval, srs_damping, tuple(names))
 
 
