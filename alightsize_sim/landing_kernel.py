@@ -179,10 +179,11 @@ def rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape,
 
 
 @njit(cache=True)
-def _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt, mt, g, raw):
+def _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt, mt, g, band):
     """Event functions g ((3 + 2C) n); an event is a crossing of zero from above. g[i]: leg i's free footpad height
     (in the air) or main-cell compression beyond its set less the reach deficit (on the ground, from the leg
-    state dt, mt already computed at y); an unarmed leg's threshold sits BAND past zero, so a footpad
+    state dt, mt already computed at y); an unarmed leg's threshold sits `band` past zero (BAND; 0.0 for the
+    raw values, a float so that numba compiles one version, not one per literal flag), so a footpad
     grazing the terrain stays put at zero force until it clearly leaves instead of switching every step.
     Not so for a footpad slid to the edge of its reach (deficit > 0): it still carries force, beyond the
     friction cone, so it leaves at once.
@@ -203,8 +204,8 @@ def _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt,
         else:
             foot = free_footpad(geo, cells, i, mem[i], shape[i], y[0:3], R)
             g[i] = foot[2] - pad_ground(mu, y, i, n, geo[9], foot[0], foot[1])
-        if not (raw or armed[i] > 0 or (contact[i] and mt[i, 1] > 0.0)):
-            g[i] += BAND
+        if not (armed[i] > 0 or (contact[i] and mt[i, 1] > 0.0)):
+            g[i] += band
         g[n + i] = mt[i, 0] if located and contact[i] else 1.0
         g[2 * n + i] = mt[i, 6] if contact[i] else 1.0
         for j in range(C):
@@ -274,7 +275,7 @@ def _commit(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, ener
     change)."""
     Pt, slt, dt, ft, Xt, mt, rt = work
     cd, cf, cn, ck, cc, cy = cells
-    _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt, mt, g, True)
+    _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt, mt, g, 0.0)
     C = mem.shape[1]
     started = False
     for i in range(len(contact)):
@@ -504,7 +505,7 @@ def _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, y1, K
         else:
             _dense(y, y1, K, h, m / h, yt)
         _legs(geo, cells, mu, mem, contact, P, sliding, shape, yt, Pt, slt, dt, ft, Xt, mt, rt, quat_matrix(yt[6:10]))
-        _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, yt, dt, rt, mt, gm, False)
+        _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, yt, dt, rt, mt, gm, BAND)
         k = _first(g_prev, gm)
         if k >= 0:
             if k != j:
@@ -554,7 +555,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
     args = (geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape)
     rhs(*args, y, K[0], *work)
     cnt[K_RHS] += 1
-    _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt, mt, g_prev, False)
+    _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt, mt, g_prev, BAND)
     weight = mass * np.sqrt(gravity[0] ** 2 + gravity[1] ** 2 + gravity[2] ** 2)
     fixed = ctl[C_FIXED] > 0.0
     h = ctl[C_FIXED] if fixed else run_state[S_H]
@@ -576,7 +577,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                 cnt[K_REJECTED] += 1
                 h *= _shrink(e)
                 continue
-        _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y1, dt, rt, mt, g1, False)
+        _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y1, dt, rt, mt, g1, BAND)
         j = _first(g_prev, g1)
         if j >= 0:
             # The earliest event: located first on the step's continuous extension (_guide), then by real trial
@@ -615,7 +616,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                     e_trial = _error_norm(y, y1, err, ctl, geo, mt, Xt, weight, mid)
                     if not e_trial <= 1.0:                 # the trial step itself fails the error test
                         break
-                _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y1, dt, rt, mt, g1, False)
+                _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y1, dt, rt, mt, g1, BAND)
                 k = _first(g_prev, g1)
                 newton += 1
                 if k >= 0:
@@ -694,7 +695,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                     P[i, 0], P[i, 1], P[i, 2] = Pt[i, 0], Pt[i, 1], Pt[i, 2]
         _copy1(H_dy[k], K[0])
         cnt[K_HIST] = k + 1
-        _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt, mt, g_prev, False)
+        _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt, mt, g_prev, BAND)
         # A footpad that is out of reach from the start (a touchdown or slide start leaving it beyond the
         # friction cone at the edge of its reach) never crosses zero from above: it leaves now.
         # It stays unarmed until it touches again (BAND past zero), whatever its height: a touchdown is located
@@ -707,7 +708,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                 rhs(*args, y, K[0], *work)
                 cnt[K_RHS] += 1
                 _copy1(H_dy[k], K[0])
-                _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt, mt, g_prev, False)
+                _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt, mt, g_prev, BAND)
         if fixed:
             h = ctl[C_FIXED]
         elif flight:
