@@ -96,8 +96,9 @@ def test_scene_files_take_a_footpad_mass_and_any_friction_from_zero(tmp_path):
     assert cfg.scene.footpad_band == 0.01
     assert read_scene(SCENES / "telescoping_config2.toml", {"legs.footpad_band": "2 mm/s"}).scene.footpad_band == \
         pytest.approx(0.002, rel=1e-12)
-    with pytest.raises(InputError, match="legs.footpad_band"):
-        read_scene(SCENES / "telescoping_config2.toml", {"legs.footpad_band": "0 m/s"})
+    for bad in ("0 m/s", ["1 cm/s"]):               # an array where a quantity belongs: still an input error
+        with pytest.raises(InputError, match="legs.footpad_band"):
+            read_scene(SCENES / "telescoping_config2.toml", {"legs.footpad_band": bad})
 
 
 def test_walking_down_a_35_degree_slope_with_5_lb_footpads_loses_what_a_sliding_block_loses():

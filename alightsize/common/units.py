@@ -54,21 +54,26 @@ def dimension_of(q: pint.Quantity) -> tuple[int, int, int]:
     return (int(d.get("[mass]", 0)), int(d.get("[length]", 0)), int(d.get("[time]", 0)))
 
 
-@lru_cache(maxsize=4096, typed=True)
 def parse(text: str | float | int, dim: str) -> float:
     """Parse "3750 lbf" into SI for dimension `dim`; raise ValueError with a readable reason.
 
     Angles are given as "15 deg" or "0.26 rad" and returned in radians (dimension "angle").
     """
-    ureg = registry()
     if isinstance(text, bool):
         raise ValueError(f"a quantity in {example(dim)}")
     if isinstance(text, (int, float)):
         if dim == "dimensionless":
             return float(text)
         raise ValueError(f"a number with a unit of {dim}, e.g. \"{example(dim)}\"")
+    return _parse_text(str(text).strip(), dim)
+
+
+@lru_cache(maxsize=4096)
+def _parse_text(text: str, dim: str) -> float:
+    """`parse` of a text, memoized: a study reads the same quantities for every landing (pint is slow)."""
+    ureg = registry()
     try:
-        q = ureg.Quantity(str(text).strip())
+        q = ureg.Quantity(text)
     except Exception as exc:  # pint raises many kinds on garbage
         raise ValueError(f"a quantity like \"{example(dim)}\" (could not read it: {exc})") from None
     if not isinstance(q, pint.Quantity):
