@@ -172,8 +172,8 @@ class _Run:
         self.armed = np.zeros(n, np.int64)
         self.energy = np.zeros((n, C))
         self.last = np.zeros((n, 2 * C + 1))
-        self.work = lk.new_work(n, C)
         self.scratch = lk.new_scratch(n, C, self.ny)
+        self.work = self.scratch[lk.SCRATCH_WORK]    # the legs' state at the current point, the step loop's too
         self.cev = lk.cell_events(self.cells, self.mem)
         self.cnt = np.zeros(6, np.int64)
         self.run_state = np.array([ctl.first_step, 0.0, 0.0, -1.0, -1.0, -1.0, -1.0, -1.0])

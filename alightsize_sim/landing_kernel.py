@@ -83,6 +83,9 @@ def new_work(n, C):
             np.zeros((n, N_MT)), np.zeros((n, C)))
 
 
+SCRATCH_WORK = 11   # new_scratch's leg-state set at the current point (`work`), which the caller's Python shares
+
+
 @njit(cache=True)
 def new_scratch(n, C, ny):
     """The step loop's working arrays, owned by its caller (run borrows them): stages K, the step's end, its error,
