@@ -65,6 +65,27 @@ def _slip_events(mu):
     return (lambda mu: True) if is_pad(mu) else _drops.py_func
 
 
+def slides_by_position(mu, contact, sliding):
+    """Whether a footpad on the ground slides by position (massless footpads under friction): its path within a
+    step is then a polygon that a step's continuous extension does not follow."""
+    return mu is not None and not isinstance(mu, PadModel) and bool(np.any((contact > 0) & (sliding > 0)))
+
+
+@njit(cache=True)
+def _any_slide(mu, contact, sliding):
+    for i in range(len(contact)):
+        if contact[i] and sliding[i]:
+            return True
+    return False
+
+
+@overload(slides_by_position)
+def _slides_by_position(mu, contact, sliding):
+    if isinstance(mu, types.NoneType) or is_pad(mu):
+        return lambda mu, contact, sliding: False
+    return _any_slide.py_func
+
+
 def contact_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, frc, rte, X, y):
     """footpad_force under friction mu = (mu_S, mu_D, the slide's relative tolerance), with mu None the leg's
     forces with its footpad held at P0 (no slip search), with a footpad_mass.PadModel the footpad where its

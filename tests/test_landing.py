@@ -105,6 +105,24 @@ def test_the_largest_stroke_converges_monotonically_with_the_tolerance(max_step)
     assert np.all(np.diff(errors[1:]) <= 1e-12), errors
 
 
+@pytest.mark.parametrize("rtol", [1e-4, 1e-6, 1e-8, 1e-10])
+def test_lift_off_is_located_on_the_step_extension_at_its_closed_form_instant(rtol):
+    """After the largest stroke (on the plateau, force F) each axial cell unloads along its spring k, undamped:
+    m x'' = m g - 4 (F - k (x_max - x)), simple harmonic about its equilibrium, and the leg leaves when its force
+    is zero, arccos(-(m g / 4) / (F - m g / 4)) / sqrt(4 k / m) after the largest stroke. The last record with a
+    leg on the ground is the located lift-off, within event_tol (1e-6 s) of that instant. Lift-off, touchdown and the
+    cells' turns are accepted on the step's continuous extension: only the 4 corners (each axial cell passing
+    0.02 m) take trial steps."""
+    _, t_max = _exact_flat_drop()
+    F, k = CURVE.force[2], 5e6
+    t_lift = t_max + np.arccos(-(MASS * G / 4) / (F - MASS * G / 4)) / np.sqrt(4 * k / MASS)
+    res = simulate(_scene(), Controls(t_final=0.1, rtol=rtol, atol=1e-3 * rtol, energy_check_from=None))
+    on = np.where(np.any(res.contact == 1, axis=1))[0]
+    assert on[-1] < len(res.t) - 1                # the legs leave together: the last record of one on the ground
+    assert abs(res.t[on[-1]] - t_lift) <= 1e-6
+    assert res.event_trials == 4
+
+
 @pytest.mark.parametrize("body, g", [("moon", 1.62), ("mars", 3.71), ("0.5 g_0", 0.5 * G)])
 def test_a_flat_drop_in_another_gravity_matches_its_closed_form(body, g):
     """The shipped flat-drop scene (the same lander as above) with `[scene] gravity` set: its maximum stroke and
