@@ -8,9 +8,9 @@ lift-off, stick-to-slip, a cell's turn from loading to unloading (its largest st
 its loading curve are located to `event_tol` seconds: first on the step's continuous extension (leg evaluations
 only), where the step is accepted just short of the crossing when its stages saw one smooth law, else by real
 trial steps aimed just short of it, the step accepted before it; a trial step that fails the error test rejects
-the step. When no leg touches an axisymmetric capsule a step is the closed-form free
-flight (eq. 62-88) instead. The loop returns to the caller on a status: the end time, a full history buffer, or an
-outcome it detects (bottoming, tip angle, body contact, quiescence, the energy criterion).
+the step. When no leg touches an axisymmetric capsule a step is the closed-form free flight (eq. 62-88) instead.
+The loop returns to the caller on a status: the end time, a full history buffer, or an outcome it detects
+(bottoming, tip angle, body contact, quiescence, the energy criterion).
 """
 
 from __future__ import annotations
@@ -535,12 +535,13 @@ def _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, y1, K
 def _on_extension(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, y1, K, h, s, ys, g_prev, gs, ws):
     """Whether the step's continuous extension at s (0 < s < h) lies before every crossing: then ys, gs and the
     leg state ws hold it. For the events whose switch waits for the step's end (touchdown, lift-off,
-    stick-to-slip, the soil's, a cell's turn: the cell loads along its curve within the step until its stroke
-    falls below the step's starting maximum), every stage saw one smooth law and the extension is as accurate
-    at the event as the step itself (fourth order): no trial step is needed there. Not so at a corner of a
-    loading curve, a kink the stages straddle (on the closed-form drop at rtol 1e-4 and 5 ms steps, the
-    extension put the largest stroke 1.8e-4 m off, trial steps 6e-8 m), nor for a footpad sliding by position
-    (footpad_slip), whose path has a corner at every step."""
+    stick-to-slip, the soil's) every stage saw one smooth law and the extension is as accurate at the event as
+    the step itself (fourth order): no trial step is needed there. A cell turning inside a step loads along its
+    curve until its stroke falls below the step's starting maximum, which near the turn's flat top only a
+    step's last stages reach, shallowly: measured on the closed-form drop, its largest stroke converges as with
+    trial steps. Not so at a corner of a loading curve, a kink the stages straddle (on the closed-form drop at
+    rtol 1e-4 and 5 ms steps, the extension put the largest stroke 1.8e-4 m off, trial steps 6e-8 m), nor for a
+    footpad sliding by position (footpad_slip), whose path has a corner at every step."""
     if not 0.0 < s < h:
         return False
     _dense(y, y1, K, h, s / h, ys)
@@ -619,12 +620,14 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
             est, slope, j = _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, y1, K, h, j,
                                    g_prev, g1, 0.1 * tol, yt, gm, ga, gb, work, flight, inertia, gravity)
             lo, hi, side, mid, a_hi, newton, e_trial = 0.0, h, 0, -1.0, g1[j], 0, 0.0
+            # Legs touching, leaving or turning together: the next ones switch at the step's start, no search (not
+            # a friction switch, whose new law may cross back at once).
             smooth = j < (3 + mem.shape[1]) * n and not (flight or slides_by_position(mu, contact, sliding))
             s = est - 0.5 * tol
             if smooth and s <= 0.0 and (j < n or j >= 3 * n):
-                lo = hi = 0.0          # legs touching, leaving or turning together (not a friction switch, whose
+                lo = hi = 0.0
             elif smooth and _on_extension(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, y1, K, h,
-                                          s, y_lo, g_prev, g_lo, work_lo):   # new law may cross back at once)
+                                          s, y_lo, g_prev, g_lo, work_lo):
                 lo = hi = s
             _copy1(g_lo, g_prev)
             f_lo, f_hi = g_prev[j], g1[j]
