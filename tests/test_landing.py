@@ -111,8 +111,9 @@ def test_lift_off_is_located_on_the_step_extension_at_its_closed_form_instant(rt
     m x'' = m g - 4 (F - k (x_max - x)), simple harmonic about its equilibrium, and the leg leaves when its force
     is zero, arccos(-(m g / 4) / (F - m g / 4)) / sqrt(4 k / m) after the largest stroke. The last record with a
     leg on the ground is the located lift-off, within event_tol (1e-6 s) of that instant. Lift-off, touchdown and the
-    cells' turns are accepted on the step's continuous extension: only the 4 corners (each axial cell passing
-    0.02 m) take trial steps."""
+    cells' turns are accepted on the step's continuous extension: only the corners take a trial step, aimed from
+    the extension's estimate. This level drop meets 4: each axial cell passes its 0.02 m corner once on the way
+    to a largest stroke short of the 0.30 m one, and the pads stay unloaded."""
     _, t_max = _exact_flat_drop()
     F, k = CURVE.force[2], 5e6
     t_lift = t_max + np.arccos(-(MASS * G / 4) / (F - MASS * G / 4)) / np.sqrt(4 * k / MASS)
