@@ -9,7 +9,7 @@ loop borrows only arrays its caller holds for the whole call, and never returns 
 
 from __future__ import annotations
 
-from numba import types
+from numba import config, types
 from numba.extending import intrinsic
 from numba.np.arrayobj import make_array, populate_array
 
@@ -30,10 +30,18 @@ def _strip(context, builder, ty, val):
 
 
 @intrinsic
-def borrowed(typingctx, x):
+def _borrowed(typingctx, x):
     """x with every array in it (through nested tuples) a view without reference counts; anything else as it is.
     One intrinsic, lowered in place: no function is compiled per element. Compiled code only."""
     def codegen(context, builder, sig, args):
         return _strip(context, builder, sig.args[0], args[0])
 
     return x(x), codegen
+
+
+def _as_is(x):
+    return x
+
+
+# `borrowed(x)`; run as Python (NUMBA_DISABLE_JIT) there is nothing to borrow: x itself.
+borrowed = _as_is if config.DISABLE_JIT else _borrowed

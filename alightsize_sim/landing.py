@@ -184,6 +184,11 @@ class _Run:
                                  -1.0 if ctl.energy_check_from is None else ctl.energy_check_from])
         attach = np.array([leg.attach for leg in scene.legs])
         self.order = np.argsort(np.arctan2(attach[:, 1], attach[:, 0])).astype(np.int64)
+        # The compiled functions' view of the landing (landing_kernel.LANDING's fields in order).
+        self.arrays = (self.geo, self.cells, scene.mass, scene.inertia, scene.gravity, self.mu, self.bottoming,
+                       scene.up, scene.body_points, self.order, self.mem, self.contact, self.P, self.sliding,
+                       self.shape, self.armed, self.cev, self.energy, self.last, self.ctl_arr, self.cnt,
+                       self.run_state)
         self._grow(1024)
 
     def _grow(self, size: int):
@@ -213,10 +218,8 @@ class _Run:
         self.cnt[lk.K_HIST] = k + 1
 
     def derivative(self, y: np.ndarray) -> np.ndarray:
-        s = self.scene
         dy = np.zeros(self.ny)
-        lk.rhs(self.geo, self.cells, s.mass, s.inertia, s.gravity, self.mu, self.mem, self.contact, self.P,
-               self.sliding, self.shape, y, dy, *self.work)
+        lk.rhs(self.arrays, y, dy, self.work)
         return dy
 
     def heights(self, r: np.ndarray, R: np.ndarray) -> np.ndarray:
@@ -224,13 +227,9 @@ class _Run:
         return np.array([clearance(self.geo[9], *foot) for foot in feet])
 
     def loop(self, y: np.ndarray, t: float) -> tuple[int, float]:
-        s = self.scene
         while True:
-            status, t = lk.run(self.geo, self.cells, s.mass, s.inertia, s.gravity, self.mu, self.bottoming, s.up,
-                               s.body_points, self.order, self.mem, self.contact, self.P, self.sliding, self.shape,
-                               self.armed, self.cev, self.energy, self.last, y, t, self.ctl_arr, self.cnt,
-                               self.run_state, self.H_t, self.H_y, self.H_dy, self.H_d, self.H_f, self.H_X, self.H_P,
-                               self.H_c, self.scratch)
+            status, t = lk.run(self.arrays, y, t, (self.H_t, self.H_y, self.H_dy, self.H_d, self.H_f, self.H_X,
+                                                   self.H_P, self.H_c), self.scratch)
             if status == lk.BUFFER:
                 self._grow(2 * len(self.H_t))
             else:
@@ -246,8 +245,7 @@ def initial_state(scene: Scene, run: _Run) -> np.ndarray:
     y0 = np.concatenate([r0, scene.v0, scene.q0, scene.omega0, np.zeros(run.ny - 13)])
     for i in np.where(heights - heights.min() <= 1e-12)[0]:
         run.armed[i] = 1                       # placed on the surface: a touchdown at zero, not BAND inside it
-        lk.switch(run.geo, run.cells, run.mu, run.mem, run.contact, run.P, run.sliding, run.shape, run.armed, y0,
-                  int(i), run.last, run.work)
+        lk.switch(run.arrays, y0, int(i), run.work)
     return y0
 
 

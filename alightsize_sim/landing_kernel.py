@@ -20,6 +20,7 @@ from numba import njit
 
 from . import crush_cell
 from .borrow import borrowed
+from .bundle import bundler
 from .footpad_mass import (FACE, FLOOR, integrates_dampers, pad_event, pad_ground, pad_rates, pad_settle, pad_switch,
                            sink_event)
 from .footpad_slip import contact_force, slides_by_position, slip_events
@@ -60,6 +61,16 @@ LOCKED = -1         # armed[i]: a leg that left at once on touching stays unarme
 BAND = 1e-4         # m: an unarmed leg switches only this far past zero (grazing contact never chatters)
 FACE_GAP = 1e-3     # m: an armed footpad touching down this far above the surface under it met a vertical face
 PATH_FLOOR = 100.0  # event_tol: steps this short or shorter skip the footpad path error (_error_norm)
+
+# Compiled functions that only compiled code calls (they take bundles, which Python cannot build): no Python or C
+# wrapper is compiled for them (~6 s of a first compile).
+_inner = njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+# The step loop's functions take their arrays as bundles (bundle.py): S, the landing (its scene and memory, in
+# the order of `run`'s `arrays`); W, the legs' state at one evaluation (new_work); T, the step's scratch.
+LANDING = bundler("geo cells mass inertia gravity mu bottoming up body order mem contact P sliding shape armed cev "
+                  "energy last ctl cnt run_state")
+WORK = bundler("Pt slt dt ft Xt mt rt")
+STEP = bundler("K y1 err g_prev g1 g_lo y_lo yt gm ga gb")
 
 
 @njit(cache=True)
@@ -139,12 +150,14 @@ def cell_event(cells, cev, which, n):
         cev[i, j, 1] = _next_corner(cells, i, j, cells[0][i, j, cev[i, j, 1]], cev[i, j, 1])
 
 
-@njit(cache=True)
-def _legs(geo, cells, mu, mem, contact, P, sliding, shape, y, Pt, slt, dt, ft, Xt, mt, rt, R):
+@_inner
+def _legs(S, W, y, R):
     """Footpad, slip state, forces and mt = (static margin, reach deficit, alpha, beta, psi, footpad path error,
     soil event value)
     of every leg at state y (mu = mu_S, mu_D, the slide's relative tolerance; None: footpads held; a
-    footpad_mass.PadModel: footpads with mass, placed by y); returns the cells' power."""
+    footpad_mass.PadModel: footpads with mass, placed by y) into the leg state W; returns the cells' power."""
+    geo, cells, mu, mem, contact, P, sliding, shape = S.geo, S.cells, S.mu, S.mem, S.contact, S.P, S.sliding, S.shape
+    Pt, slt, dt, ft, Xt, mt, rt = W.Pt, W.slt, W.dt, W.ft, W.Xt, W.mt, W.rt
     r, v, w = y[0:3], (y[3], y[4], y[5]), y[10:13]
     power = 0.0
     for i in range(len(contact)):
@@ -158,13 +171,15 @@ def _legs(geo, cells, mu, mem, contact, P, sliding, shape, y, Pt, slt, dt, ft, X
     return power
 
 
-@njit(cache=True)
-def rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape, y, dy, Pt, slt, dt, ft, Xt, mt, rt):
+@_inner
+def _rhs(S, y, dy, W):
     """dy/dt: eq. 3-5 in terrain axes, Euler's equations 6-8 in principal axes, quaternion rate, leg work (and
-    the footpads' motion and friction work when they have mass: footpad_mass)."""
+    the footpads' motion and friction work when they have mass: footpad_mass); the leg state into W."""
+    mass, inertia, gravity, contact = S.mass, S.inertia, S.gravity, S.contact
+    Pt, Xt = W.Pt, W.Xt
     R = quat_matrix(y[6:10])
-    power = _legs(geo, cells, mu, mem, contact, P, sliding, shape, y, Pt, slt, dt, ft, Xt, mt, rt, R)
-    power += pad_rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy)
+    power = _legs(S, W, y, R)
+    power += pad_rates(S.mu, S.cells, S.mem, contact, S.sliding, Xt, W.dt, W.ft, W.rt, power, R, y, dy)
     F0 = F1 = F2 = M0 = M1 = M2 = 0.0
     for i in range(len(contact)):
         if contact[i]:
@@ -183,7 +198,13 @@ def rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape,
 
 
 @njit(cache=True)
-def _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt, mt, g, band):
+def rhs(arrays, y, dy, work):
+    """_rhs for Python: arrays as `run` takes them, work new_work's."""
+    _rhs(LANDING(*borrowed(arrays)), y, dy, WORK(*borrowed(work)))
+
+
+@_inner
+def _events(S, y, W, g, band):
     """Event functions g ((3 + 2C) n); an event is a crossing of zero from above. g[i]: leg i's free footpad height
     (in the air) or main-cell compression beyond its set less the reach deficit (on the ground, from the leg
     state dt, mt already computed at y); an unarmed leg's threshold sits `band` past zero (BAND; 0.0 for the
@@ -199,6 +220,8 @@ def _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt,
     else 1).
     Locating these keeps every step's forces smooth: the largest stroke, which sets the unloading branch and the
     bottoming margin, is then found to event_tol, not sampled at step points."""
+    geo, cells, mu, mem, contact, shape, armed, cev = S.geo, S.cells, S.mu, S.mem, S.contact, S.shape, S.armed, S.cev
+    dt, rt, mt = W.dt, W.rt, W.mt
     n, C = len(contact), mem.shape[1]
     R = quat_matrix(y[6:10])
     located = slip_events(mu)
@@ -217,6 +240,12 @@ def _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt,
             g[3 * n + c] = rt[i, j] if contact[i] and cev[i, j, 0] else 1.0
             k = cev[i, j, 1]
             g[(3 + C) * n + c] = cells[0][i, j, k] - dt[i, j] if contact[i] and k < cells[2][i, j] else 1.0
+
+
+@njit(cache=True)
+def events(arrays, y, work, g, band):
+    """_events for Python (arrays as `run` takes them)."""
+    _events(LANDING(*borrowed(arrays)), y, WORK(*borrowed(work)), g, band)
 
 
 @njit(cache=True)
@@ -243,16 +272,16 @@ def _fly(y, h, inertia, gravity, out):
         out[c] = y[c]
 
 
-@njit(cache=True)
-def _stage(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape, y, h, K, y1, err, work, flight):
+@_inner
+def _stage(S, y, h, K, y1, err, W, flight):
     """One Dormand-Prince step of size h from y with K[0] = f(y): y1, the error estimate, K[6] = f(y1); the
     work arrays are left holding the legs at y1 (the last stage is evaluated there). With `flight` (no leg
     on the ground, axisymmetric body) the step is the closed form of eq. 62-88, exact."""
     if flight:
-        _fly(y, h, inertia, gravity, y1)
+        _fly(y, h, S.inertia, S.gravity, y1)
         for c in range(len(y)):
             err[c] = 0.0
-        rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape, y1, K[6], *work)
+        _rhs(S, y1, K[6], W)
         return
     yi = y1                                                     # stage state, overwritten below
     for s in range(1, 7):
@@ -261,7 +290,7 @@ def _stage(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, sha
             for j in range(s):
                 acc += h * A[s, j] * K[j, c]
             yi[c] = acc
-        rhs(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape, yi, K[s], *work)
+        _rhs(S, yi, K[s], W)
     for c in range(len(y)):
         acc, e = y[c], 0.0
         for j in range(7):
@@ -270,16 +299,18 @@ def _stage(geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, sha
         y1[c], err[c] = acc, e
 
 
-@njit(cache=True)
-def _commit(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, energy, last, work, g):
+@_inner
+def _commit(S, y, W, g):
     """Accept state y: arm legs clear of their last switch, move footpads, keep the legs' shapes, start slides
     where the static margin is gone, add the step's work, update cell memory. energy (n, C): each cell's work
     (exact for the rate-free force, trapezoidal for the damper). last (n, 2C + 1): deflections, damper forces and a flag
     that they are set; cev the cells' event memory (cell_events). Returns whether a slide started (the forces at y
     change)."""
-    Pt, slt, dt, ft, Xt, mt, rt = work
+    geo, cells, mu, mem, contact, P, sliding, shape = S.geo, S.cells, S.mu, S.mem, S.contact, S.P, S.sliding, S.shape
+    armed, cev, energy, last = S.armed, S.cev, S.energy, S.last
+    Pt, slt, dt, ft, Xt, mt, rt = W.Pt, W.slt, W.dt, W.ft, W.Xt, W.mt, W.rt
     cd, cf, cn, ck, cc, cy = cells
-    _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt, mt, g, 0.0)
+    _events(S, y, W, g, 0.0)
     C = mem.shape[1]
     started = False
     for i in range(len(contact)):
@@ -317,16 +348,30 @@ def _commit(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, ener
 
 
 @njit(cache=True)
+def stage(arrays, y, h, K, y1, err, work, flight):
+    """_stage for Python (arrays as `run` takes them)."""
+    _stage(LANDING(*borrowed(arrays)), y, h, K, y1, err, WORK(*borrowed(work)), flight)
+
+
+@njit(cache=True)
+def commit(arrays, y, work, g):
+    """_commit for Python (arrays as `run` takes them)."""
+    return _commit(LANDING(*borrowed(arrays)), y, WORK(*borrowed(work)), g)
+
+
+@njit(cache=True)
 def _leg_force_call(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
     """legs.leg_force as a call, for the rare paths (a touchdown, a lift-off): the step's paths inline it."""
     return leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
 
 
-@njit(cache=True)
-def switch(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, which, last, work):
+@_inner
+def _switch(S, y, which, W):
     """Touchdown (the footpad holds where it landed) or lift-off (the shape is stored for recontact: eq. 13,
     FORCE's ZETA)."""
-    Pt, slt, dt, ft, Xt, mt, rt = work
+    geo, cells, mu, mem, contact, P, sliding, shape = S.geo, S.cells, S.mu, S.mem, S.contact, S.P, S.sliding, S.shape
+    armed, last = S.armed, S.last
+    dt, ft, Xt, rt = W.dt, W.ft, W.Xt, W.rt
     R = quat_matrix(y[6:10])
     was_armed = armed[which] > 0
     armed[which] = 0
@@ -360,9 +405,16 @@ def switch(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, which, las
 
 
 @njit(cache=True)
-def _monitor(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem, contact, P, shape, y, t,
-             dt_step, ctl, run):
+def switch(arrays, y, which, work):
+    """_switch for Python (arrays as `run` takes them)."""
+    _switch(LANDING(*borrowed(arrays)), y, which, WORK(*borrowed(work)))
+
+
+@_inner
+def _monitor(S, y, t, dt_step):
     """Outcome checks after an accepted step; a status or -1."""
+    geo, mass, inertia, gravity, bottoming, up, body = S.geo, S.mass, S.inertia, S.gravity, S.bottoming, S.up, S.body
+    order, mem, contact, P, shape, ctl, run = S.order, S.mem, S.contact, S.P, S.shape, S.ctl, S.run_state
     R = quat_matrix(y[6:10])
     n = len(contact)
     for i in range(n):
@@ -411,8 +463,7 @@ def _monitor(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order,
         if on_ground == n:
             if stable_by_energy(margins):                       # eq. 89-95 (QUIMOT) for every adjacent pair
                 return STABLE
-        elif stable_by_energy(margins) and _hanging_clear(geo, cells, mass, inertia, gravity, mu, order, mem, contact,
-                                                          P, shape, y, R):
+        elif stable_by_energy(margins) and _hanging_clear(S, y, R):
             if run[S_HANG] < 0.0:
                 run[S_HANG] = t
             if t - run[S_HANG] >= 2.0 * ctl[C_PERIOD] and y[5] >= 0.0:
@@ -422,11 +473,13 @@ def _monitor(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order,
     return -1
 
 
-@njit(cache=True)
-def _hanging_clear(geo, cells, mass, inertia, gravity, mu, order, mem, contact, P, shape, y, R):
+@_inner
+def _hanging_clear(S, y, R):
     """Every leg in the air is clear of the ground under it (the terrain, or the hole its footpad left in soil)
     and cannot be brought down by the capsule's kinetic energy about the edge through its grounded neighbours
     (in their order round the capsule)."""
+    geo, cells, mass, inertia, gravity, mu = S.geo, S.cells, S.mass, S.inertia, S.gravity, S.mu
+    order, mem, contact, P, shape = S.order, S.mem, S.contact, S.P, S.shape
     n = len(contact)
     for m in range(n):
         i = order[m]
@@ -445,8 +498,8 @@ def _hanging_clear(geo, cells, mass, inertia, gravity, mu, order, mem, contact, 
     return True
 
 
-@njit(cache=True)
-def _error_norm(y, y1, err, ctl, geo, mt, Xt, weight, h):
+@_inner
+def _error_norm(S, y, y1, err, W, weight, h):
     """RMS of the step's error estimate over atol + rtol max(|y|, |y1|) (Hairer, Norsett and Wanner, Solving ODEs I,
     eq. II.4.11), or the largest sliding footpad's path error over atol + rtol x its leg's reach if larger; NaN
     stays NaN. A path error counts in proportion to its leg's ground force over the capsule's weight (at most
@@ -454,6 +507,7 @@ def _error_norm(y, y1, err, ctl, geo, mt, Xt, weight, h):
     direction is ill-defined as its load goes to zero. Steps of PATH_FLOOR x event_tol or less skip the path
     error: there it no longer falls as h^2 (a slide that jumps, the friction cone folding near zero normal load;
     a push direction that turns by a finite angle within a tiny slide), so shorter steps would not reduce it."""
+    ctl, reach, mt, Xt = S.ctl, S.geo[2], W.mt, W.Xt
     e = 0.0
     for c in range(len(y)):
         e += (err[c] / (ctl[C_ATOL] + ctl[C_RTOL] * max(abs(y[c]), abs(y1[c])))) ** 2
@@ -462,7 +516,7 @@ def _error_norm(y, y1, err, ctl, geo, mt, Xt, weight, h):
         return e
     for i in range(mt.shape[0]):
         load = min(np.sqrt(Xt[i, 0] ** 2 + Xt[i, 1] ** 2 + Xt[i, 2] ** 2) / weight, 1.0)
-        e = max(e, load * mt[i, 5] / (ctl[C_ATOL] + ctl[C_RTOL] * geo[2][i]))
+        e = max(e, load * mt[i, 5] / (ctl[C_ATOL] + ctl[C_RTOL] * reach[i]))
     return e
 
 
@@ -487,16 +541,15 @@ def _dense(y0, y1, K, h, theta, out):
         out[c] = y0[c] + theta * (d + s * (r3 + theta * (r4 + s * r5)))
 
 
-@njit(cache=True)
-def _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, y1, K, h, j, g_prev, g1, tol, yt, gm,
-           ga, gb, work, flight, inertia, gravity):
+@_inner
+def _guide(S, W, T, y, h, j, tol, flight):
     """The earliest crossing on the step's continuous extension (in free flight, where the step computes no
     stages, the closed form itself), found by Illinois false position with one leg evaluation per point (no
     integration): (time estimate, slope of the crossing function there, its index)."""
-    Pt, slt, dt, ft, Xt, mt, rt = work
+    y1, K, g_prev, yt, gm, ga, gb = T.y1, T.K, T.g_prev, T.yt, T.gm, T.ga, T.gb
     a, b, side = 0.0, h, 0
     _copy1(ga, g_prev)
-    _copy1(gb, g1)
+    _copy1(gb, T.g1)
     fa, fb = ga[j], gb[j]
     for _ in range(60):
         if b - a <= tol:
@@ -505,11 +558,11 @@ def _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, y1, K
         if not (a < m < b):
             m = 0.5 * (a + b)
         if flight:
-            _fly(y, m, inertia, gravity, yt)
+            _fly(y, m, S.inertia, S.gravity, yt)
         else:
             _dense(y, y1, K, h, m / h, yt)
-        _legs(geo, cells, mu, mem, contact, P, sliding, shape, yt, Pt, slt, dt, ft, Xt, mt, rt, quat_matrix(yt[6:10]))
-        _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, yt, dt, rt, mt, gm, BAND)
+        _legs(S, W, yt, quat_matrix(yt[6:10]))
+        _events(S, yt, W, gm, BAND)
         k = _first(g_prev, gm)
         if k >= 0:
             if k != j:
@@ -531,10 +584,10 @@ def _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, y1, K
     return a + ga[j] / max(-slope, 1e-300) if ga[j] > 0.0 else a, min(slope, -1e-300), j
 
 
-@njit(cache=True)
-def _on_extension(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, y1, K, h, s, ys, g_prev, gs, ws):
-    """Whether the step's continuous extension at s (0 < s < h) lies before every crossing: then ys, gs and the
-    leg state ws hold it. For the events whose switch waits for the step's end (touchdown, lift-off,
+@_inner
+def _on_extension(S, T, W_lo, y, h, s):
+    """Whether the step's continuous extension at s (0 < s < h) lies before every crossing: then T.y_lo, T.g_lo
+    and the leg state W_lo hold it. For the events whose switch waits for the step's end (touchdown, lift-off,
     stick-to-slip, the soil's) every stage saw one smooth law and the extension is as accurate at the event as
     the step itself (fourth order): no trial step is needed there. A cell turning inside a step loads along its
     curve until its stroke falls below the step's starting maximum, which near the turn's flat top only a
@@ -544,41 +597,43 @@ def _on_extension(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y
     footpad sliding by position (footpad_slip), whose path has a corner at every step."""
     if not 0.0 < s < h:
         return False
-    _dense(y, y1, K, h, s / h, ys)
-    _legs(geo, cells, mu, mem, contact, P, sliding, shape, ys, *ws, quat_matrix(ys[6:10]))
-    _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, ys, ws[2], ws[6], ws[5], gs, BAND)
-    return _first(g_prev, gs) < 0
+    ys = T.y_lo
+    _dense(y, T.y1, T.K, h, s / h, ys)
+    _legs(S, W_lo, ys, quat_matrix(ys[6:10]))
+    _events(S, ys, W_lo, T.g_lo, BAND)
+    return _first(T.g_prev, T.g_lo) < 0
 
 
-@njit(cache=True)
+@_inner
 def _copy_work(src, dst):
-    """Copy the leg state arrays of one evaluation (footpads, slip, deflections, forces, margins, rates)."""
-    _copy2(dst[0], src[0])
-    _copy1(dst[1], src[1])
-    _copy2(dst[2], src[2])
-    _copy2(dst[3], src[3])
-    _copy2(dst[4], src[4])
-    _copy2(dst[5], src[5])
-    _copy2(dst[6], src[6])
+    """Copy the leg state of one evaluation (footpads, slip, deflections, forces, margins, rates)."""
+    _copy2(dst.Pt, src.Pt)
+    _copy1(dst.slt, src.slt)
+    _copy2(dst.dt, src.dt)
+    _copy2(dst.ft, src.ft)
+    _copy2(dst.Xt, src.Xt)
+    _copy2(dst.mt, src.mt)
+    _copy2(dst.rt, src.rt)
 
 
 @njit(cache=True)
-def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem, contact, P, sliding, shape, armed,
-        cev, energy, last, y, t, ctl, cnt, run_state, H_t, H_y, H_dy, H_d, H_f, H_X, H_P, H_c, scratch):
+def run(arrays, y, t, history, scratch):
     """Advance the landing from (t, y) until t_final or a status; y, t and every memory array are updated in
-    place; scratch is new_scratch's. Returns (status, t). Every array is used through a view without reference
-    counts (borrow.py): the caller holds them all for the call."""
-    geo, cells, inertia, gravity, bottoming, up, body, order, mem, contact, P, sliding, shape, armed, cev, energy, \
-        last, y, ctl, cnt, run_state, H_t, H_y, H_dy, H_d, H_f, H_X, H_P, H_c, mu = borrowed(
-            (geo, cells, inertia, gravity, bottoming, up, body, order, mem, contact, P, sliding, shape, armed, cev,
-             energy, last, y, ctl, cnt, run_state, H_t, H_y, H_dy, H_d, H_f, H_X, H_P, H_c, mu))
+    place. arrays: the landing's (LANDING's fields in order), history: the record's (H_t, H_y, H_dy, H_d, H_f,
+    H_X, H_P, H_c), scratch: new_scratch's. Returns (status, t). Every array is used through a view without
+    reference counts (borrow.py): the caller holds them all for the call."""
+    H_t, H_y, H_dy, H_d, H_f, H_X, H_P, H_c = borrowed(history)
     K, y1, err, g_prev, g1, g_lo, y_lo, yt, gm, ga, gb, work, work_lo = borrowed(scratch)
+    S, T = LANDING(*borrowed(arrays)), STEP(K, y1, err, g_prev, g1, g_lo, y_lo, yt, gm, ga, gb)
+    W, W_lo, y = WORK(*work), WORK(*work_lo), borrowed(y)
+    mass, gravity, mu, mem, contact, P, sliding, armed = S.mass, S.gravity, S.mu, S.mem, S.contact, S.P, S.sliding, \
+        S.armed
+    ctl, cnt, run_state = S.ctl, S.cnt, S.run_state
     n, n_cell = mem.shape[0], mem.shape[1]
-    Pt, slt, dt, ft, Xt, mt, rt = work
-    args = (geo, cells, mass, inertia, gravity, mu, mem, contact, P, sliding, shape)
-    rhs(*args, y, K[0], *work)
+    Pt, slt, dt, ft, Xt = W.Pt, W.slt, W.dt, W.ft, W.Xt
+    _rhs(S, y, K[0], W)
     cnt[K_RHS] += 1
-    _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt, mt, g_prev, BAND)
+    _events(S, y, W, g_prev, BAND)
     weight = mass * np.sqrt(gravity[0] ** 2 + gravity[1] ** 2 + gravity[2] ** 2)
     fixed = ctl[C_FIXED] > 0.0
     h = ctl[C_FIXED] if fixed else run_state[S_H]
@@ -592,15 +647,15 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
         if flight:
             h = ctl[C_MAXSTEP]
         h = min(h, t_final - t)
-        _stage(*args, y, h, K, y1, err, work, flight)
+        _stage(S, y, h, K, y1, err, W, flight)
         cnt[K_RHS] += 6
         if not (fixed or flight):
-            e = _error_norm(y, y1, err, ctl, geo, mt, Xt, weight, h)
+            e = _error_norm(S, y, y1, err, W, weight, h)
             if not e <= 1.0:
                 cnt[K_REJECTED] += 1
                 h *= _shrink(e)
                 continue
-        _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y1, dt, rt, mt, g1, BAND)
+        _events(S, y1, W, g1, BAND)
         j = _first(g_prev, g1)
         if j >= 0:
             # The earliest event: located first on the step's continuous extension (_guide); the step is
@@ -617,8 +672,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
             # (a slip search that misses the dip near the peg-leg axis and slides far).
             cnt[K_EVENTS] += 1
             tol = ctl[C_EVENTTOL]
-            est, slope, j = _guide(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, y1, K, h, j,
-                                   g_prev, g1, 0.1 * tol, yt, gm, ga, gb, work, flight, inertia, gravity)
+            est, slope, j = _guide(S, W, T, y, h, j, 0.1 * tol, flight)
             lo, hi, side, mid, a_hi, newton, e_trial = 0.0, h, 0, -1.0, g1[j], 0, 0.0
             # Legs touching, leaving or turning together: the next ones switch at the step's start, no search (not
             # a friction switch, whose new law may cross back at once).
@@ -626,8 +680,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
             s = est - 0.5 * tol
             if smooth and s <= 0.0 and (j < n or j >= 3 * n):
                 lo = hi = 0.0
-            elif smooth and _on_extension(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, y1, K, h,
-                                          s, y_lo, g_prev, g_lo, work_lo):
+            elif smooth and _on_extension(S, T, W_lo, y, h, s):
                 lo = hi = s
             _copy1(g_lo, g_prev)
             f_lo, f_hi = g_prev[j], g1[j]
@@ -642,14 +695,14 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                     mid = hi - f_hi * (hi - lo) / (f_hi - f_lo) if f_hi != f_lo else 0.5 * (lo + hi)
                 if not (lo < mid < hi):
                     mid = 0.5 * (lo + hi)
-                _stage(*args, y, mid, K, y1, err, work, flight)
+                _stage(S, y, mid, K, y1, err, W, flight)
                 cnt[K_RHS] += 6
                 cnt[K_TRIALS] += 1
                 if not (fixed or flight):
-                    e_trial = _error_norm(y, y1, err, ctl, geo, mt, Xt, weight, mid)
+                    e_trial = _error_norm(S, y, y1, err, W, weight, mid)
                     if not e_trial <= 1.0:                 # the trial step itself fails the error test
                         break
-                _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y1, dt, rt, mt, g1, BAND)
+                _events(S, y1, W, g1, BAND)
                 k = _first(g_prev, g1)
                 newton += 1
                 if k >= 0:
@@ -664,7 +717,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                     lo, f_lo = mid, g1[j]
                     _copy1(g_lo, g1)
                     _copy1(y_lo, y1)
-                    _copy_work(work, work_lo)
+                    _copy_work(W, W_lo)
                     est = lo + g1[j] / -slope
                     if side == 1:
                         f_hi *= 0.5
@@ -676,11 +729,11 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
             forced, h_acc = j, lo
             if lo == 0.0:                              # the crossing is within event_tol of the start
                 _copy1(y1, y)
-                rhs(*args, y1, K[6], *work)
+                _rhs(S, y1, K[6], W)
                 cnt[K_RHS] += 1
             else:
                 _copy1(y1, y_lo)
-                _copy_work(work_lo, work)
+                _copy_work(W_lo, W)
         else:
             forced, h_acc = -1, h
         # Watchdog: accepted steps that no longer advance time (a switching function crossing back and forth
@@ -694,9 +747,9 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
         for c in range(6, 10):
             y[c] /= qn
         cnt[K_STEPS] += 1
-        changed = _commit(geo, cells, mu, mem, contact, P, sliding, shape, armed, cev, y, energy, last, work, g1)
+        changed = _commit(S, y, W, g1)
         if forced >= 3 * n:
-            cell_event(cells, cev, forced, n)
+            cell_event(S.cells, S.cev, forced, n)
         elif forced >= 2 * n:
             changed = sink_event(mu, y, forced - 2 * n, sliding)
         elif forced >= n:
@@ -718,8 +771,8 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
             _copy1(K[0], K[6])                        # first same as last: memory updates keep the force
         else:
             if 0 <= forced < n:
-                switch(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, forced, last, work)
-            rhs(*args, y, K[0], *work)
+                _switch(S, y, forced, W)
+            _rhs(S, y, K[0], W)
             cnt[K_RHS] += 1
             # A slide that jumps here (it starts with mu_S > mu_D, or a touchdown) starts the next step where it
             # lands, so that the step's slide and its path error vanish with h.
@@ -728,20 +781,20 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
                     P[i, 0], P[i, 1], P[i, 2] = Pt[i, 0], Pt[i, 1], Pt[i, 2]
         _copy1(H_dy[k], K[0])
         cnt[K_HIST] = k + 1
-        _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt, mt, g_prev, BAND)
+        _events(S, y, W, g_prev, BAND)
         # A footpad that is out of reach from the start (a touchdown or slide start leaving it beyond the
         # friction cone at the edge of its reach) never crosses zero from above: it leaves now.
         # It stays unarmed until it touches again (BAND past zero), whatever its height: a touchdown is located
         # to within event_tol, so the footpad may hang above the terrain by more than ARM, and re-arming it
         # there would let it touch and leave again at the same instant.
         for i in range(n):
-            if contact[i] and mt[i, 1] > 0.0 and g_prev[i] <= 0.0:
-                switch(geo, cells, mu, mem, contact, P, sliding, shape, armed, y, i, last, work)
+            if contact[i] and W.mt[i, 1] > 0.0 and g_prev[i] <= 0.0:
+                _switch(S, y, i, W)
                 armed[i] = LOCKED
-                rhs(*args, y, K[0], *work)
+                _rhs(S, y, K[0], W)
                 cnt[K_RHS] += 1
                 _copy1(H_dy[k], K[0])
-                _events(cells, geo, mu, mem, contact, sliding, shape, armed, cev, y, dt, rt, mt, g_prev, BAND)
+                _events(S, y, W, g_prev, BAND)
         if fixed:
             h = ctl[C_FIXED]
         elif flight:
@@ -750,8 +803,7 @@ def run(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem,
             h = min(ctl[C_MAXSTEP], h * min(5.0, 0.9 * max(e, 1e-10) ** -0.2))
         if not flight:
             run_state[S_H] = h
-        status = _monitor(geo, cells, mass, inertia, gravity, mu, bottoming, up, body, order, mem, contact, P, shape, y,
-                          t, h_acc, ctl, run_state)
+        status = _monitor(S, y, t, h_acc)
         if status >= 0:
             return status, t
         if cnt[K_HIST] >= len(H_t):

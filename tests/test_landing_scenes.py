@@ -99,10 +99,8 @@ def test_footpad_path_error_falls_as_the_step_squared():
     path = []
     for h in (1e-4, 5e-5):
         K, y1, err = np.zeros((7, 14)), np.empty(14), np.empty(14)
-        lk.rhs(run.geo, run.cells, s.mass, s.inertia, s.gravity, run.mu, run.mem, run.contact, run.P, run.sliding,
-               run.shape, y, K[0], *run.work)
-        lk._stage(run.geo, run.cells, s.mass, s.inertia, s.gravity, run.mu, run.mem, run.contact, run.P,
-                  run.sliding, run.shape, y, h, K, y1, err, run.work, False)
+        lk.rhs(run.arrays, y, K[0], run.work)
+        lk.stage(run.arrays, y, h, K, y1, err, run.work, False)
         path.append(run.work[5][0, 5])
     assert path[1] > 0 and path[0] / path[1] == pytest.approx(4.0, abs=0.7)
 

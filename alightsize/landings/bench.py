@@ -117,8 +117,7 @@ def scipy_landing(cfg: SceneConfig, ctl: Controls, method: str) -> tuple[dict, i
 
     def f(_t, yy):
         dy = np.zeros(run.ny)
-        lk.rhs(run.geo, run.cells, s.mass, s.inertia, s.gravity, run.mu, run.mem, run.contact, run.P, run.sliding,
-               run.shape, yy, dy, *work)
+        lk.rhs(run.arrays, yy, dy, work)
         return dy
 
     def events(yy, out):
@@ -127,8 +126,7 @@ def scipy_landing(cfg: SceneConfig, ctl: Controls, method: str) -> tuple[dict, i
 
     def _events(yy, out):
         """Event values at yy from the leg state the last evaluation of f left in `work`."""
-        lk._events(run.cells, run.geo, run.mu, run.mem, run.contact, run.sliding, run.shape, run.armed, run.cev, yy,
-                   work[2], work[6], work[5], out, False)
+        lk.events(run.arrays, yy, work, out, 0.0)
         return out
 
     def accept(tt, yy, which):
@@ -136,15 +134,13 @@ def scipy_landing(cfg: SceneConfig, ctl: Controls, method: str) -> tuple[dict, i
         n on, which the commit starts, a footpad's soil mode from 2n on, a cell's turn or loading-curve corner from
         3n on); the peak acceleration there."""
         dy = f(tt, yy)
-        started = lk._commit(run.geo, run.cells, run.mu, run.mem, run.contact, run.P, run.sliding, run.shape,
-                             run.armed, run.cev, yy, run.energy, run.last, work, g)
+        started = lk.commit(run.arrays, yy, work, g)
         if which >= 3 * n:
             lk.cell_event(run.cells, run.cev, which, n)
         elif which >= 2 * n:
             sink_event(run.mu, yy, which - 2 * n, run.sliding)
         elif 0 <= which < n:
-            lk.switch(run.geo, run.cells, run.mu, run.mem, run.contact, run.P, run.sliding, run.shape, run.armed, yy,
-                      which, run.last, work)
+            lk.switch(run.arrays, yy, which, work)
         if which >= 0 or started:
             dy = f(tt, yy)
         _events(yy, g_prev)
