@@ -202,26 +202,6 @@ class _Run:
                 arr[:k] = getattr(self, name)[:k]
             setattr(self, name, arr)
 
-    def record(self, t: float, y: np.ndarray, dy: np.ndarray):
-        """A history point outside the compiled loop (start, free flight)."""
-        if self.cnt[lk.K_HIST] >= len(self.H_t):
-            self._grow(2 * len(self.H_t))
-        k = int(self.cnt[lk.K_HIST])
-        self.H_t[k], self.H_y[k], self.H_dy[k] = t, y, dy
-        self.H_P[k], self.H_c[k] = self.P, self.contact
-        Pt, slt, dt, ft, Xt, mt, rt = self.work
-        for i in range(self.n):
-            if self.contact[i]:
-                self.H_d[k, i], self.H_f[k, i], self.H_X[k, i] = dt[i], ft[i], Xt[i]
-            else:
-                self.H_d[k, i], self.H_f[k, i], self.H_X[k, i] = np.nan, 0.0, 0.0
-        self.cnt[lk.K_HIST] = k + 1
-
-    def derivative(self, y: np.ndarray) -> np.ndarray:
-        dy = np.zeros(self.ny)
-        lk.rhs(self.arrays, y, dy, self.work)
-        return dy
-
     def heights(self, r: np.ndarray, R: np.ndarray) -> np.ndarray:
         feet = [free_footpad(self.geo, self.cells, i, self.mem[i], self.shape[i], r, R) for i in range(self.n)]
         return np.array([clearance(self.geo[9], *foot) for foot in feet])
@@ -238,14 +218,13 @@ class _Run:
 
 def initial_state(scene: Scene, run: _Run) -> np.ndarray:
     """y0 with the CG placed so the lowest footpad touches the terrain at t = 0 (first contact by
-    construction, as FORCE shifts R(3) by XMIN); the lowest legs touch."""
+    construction, as FORCE shifts R(3) by XMIN); the lowest legs are marked to touch down (at zero, not BAND
+    inside the surface) as the compiled loop starts (landing_kernel.TOUCH)."""
     R = quat_matrix(scene.q0)
     heights = run.heights(np.zeros(3), R)
     r0 = np.array([0.0, 0.0, -heights.min()])
     y0 = np.concatenate([r0, scene.v0, scene.q0, scene.omega0, np.zeros(run.ny - 13)])
-    for i in np.where(heights - heights.min() <= 1e-12)[0]:
-        run.armed[i] = 1                       # placed on the surface: a touchdown at zero, not BAND inside it
-        lk.switch(run.arrays, y0, int(i), run.work)
+    run.armed[heights - heights.min() <= 1e-12] = lk.TOUCH
     return y0
 
 
@@ -259,7 +238,6 @@ def simulate(scene: Scene, ctl: Controls) -> Result:
     run = _Run(scene, ctl)
     y = initial_state(scene, run)
     run.run_state[lk.S_MOMENTUM] = quiescence_momenta(scene.v0, scene.omega0, scene.mass, scene.inertia)[0]
-    run.record(0.0, y.copy(), run.derivative(y))
     status, t = run.loop(y, 0.0)
     wall = time.perf_counter() - wall
     k = int(run.cnt[lk.K_HIST])

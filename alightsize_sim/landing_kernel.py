@@ -58,6 +58,7 @@ MAX_STALL = 100     # accepted steps in a row that do not advance time before th
 GTOL = 1e-12       # m: a contact event function this close above zero counts as there
 ARM = 1e-7          # m: a leg's next switch is armed once it is this far from its last one
 LOCKED = -1         # armed[i]: a leg that left at once on touching stays unarmed until it touches again
+TOUCH = 2           # armed[i]: a leg placed on the surface before the run, which touches down as the run starts
 BAND = 1e-4         # m: an unarmed leg switches only this far past zero (grazing contact never chatters)
 FACE_GAP = 1e-3     # m: an armed footpad touching down this far above the surface under it met a vertical face
 PATH_FLOOR = 100.0  # event_tol: steps this short or shorter skip the footpad path error (_error_norm)
@@ -71,6 +72,7 @@ LANDING = bundler("geo cells mass inertia gravity mu bottoming up body order mem
                   "energy last ctl cnt run_state")
 WORK = bundler("Pt slt dt ft Xt mt rt")
 STEP = bundler("K y1 err g_prev g1 g_lo y_lo yt gm ga gb")
+HISTORY = bundler("t y dy d f X P c")
 
 
 @njit(cache=True)
@@ -605,6 +607,23 @@ def _on_extension(S, T, W_lo, y, h, s):
 
 
 @_inner
+def _record(H, k, t, y, S, W):
+    """History row k: time, state, the legs' deflections, forces and ground forces (NaN, 0 off the ground),
+    footpads and contact flags (the caller writes the derivative)."""
+    contact, dt, ft, Xt = S.contact, W.dt, W.ft, W.Xt
+    H.t[k] = t
+    _copy1(H.y[k], y)
+    for i in range(len(contact)):
+        on = contact[i] > 0
+        for c in range(dt.shape[1]):
+            H.d[k, i, c], H.f[k, i, c] = (dt[i, c], ft[i, c]) if on else (np.nan, 0.0)
+        for c in range(3):
+            H.X[k, i, c] = Xt[i, c] if on else 0.0
+    _copy2(H.P[k], S.P)
+    _copy1(H.c[k], contact)
+
+
+@_inner
 def _copy_work(src, dst):
     """Copy the leg state of one evaluation (footpads, slip, deflections, forces, margins, rates)."""
     _copy2(dst.Pt, src.Pt)
@@ -619,19 +638,26 @@ def _copy_work(src, dst):
 @njit(cache=True)
 def run(arrays, y, t, history, scratch):
     """Advance the landing from (t, y) until t_final or a status; y, t and every memory array are updated in
-    place. arrays: the landing's (LANDING's fields in order), history: the record's (H_t, H_y, H_dy, H_d, H_f,
-    H_X, H_P, H_c), scratch: new_scratch's. Returns (status, t). Every array is used through a view without
-    reference counts (borrow.py): the caller holds them all for the call."""
-    H_t, H_y, H_dy, H_d, H_f, H_X, H_P, H_c = borrowed(history)
+    place. arrays: the landing's (LANDING's fields in order), history: the record's (HISTORY's fields in order:
+    t, y, dy, cell deflections and forces, ground forces, footpads, contact flags), scratch: new_scratch's.
+    Legs marked TOUCH touch down first, and an empty record gets its first row. Returns (status, t). Every
+    array is used through a view without reference counts (borrow.py): the caller holds them all for the call."""
     K, y1, err, g_prev, g1, g_lo, y_lo, yt, gm, ga, gb, work, work_lo = borrowed(scratch)
     S, T = LANDING(*borrowed(arrays)), STEP(K, y1, err, g_prev, g1, g_lo, y_lo, yt, gm, ga, gb)
-    W, W_lo, y = WORK(*work), WORK(*work_lo), borrowed(y)
+    W, W_lo, H, y = WORK(*work), WORK(*work_lo), HISTORY(*borrowed(history)), borrowed(y)
     mass, gravity, mu, mem, contact, P, sliding, armed = S.mass, S.gravity, S.mu, S.mem, S.contact, S.P, S.sliding, \
         S.armed
     ctl, cnt, run_state = S.ctl, S.cnt, S.run_state
-    n, n_cell = mem.shape[0], mem.shape[1]
-    Pt, slt, dt, ft, Xt = W.Pt, W.slt, W.dt, W.ft, W.Xt
+    n = mem.shape[0]
+    Pt, slt, Xt = W.Pt, W.slt, W.Xt
+    for i in range(n):
+        if armed[i] == TOUCH:
+            _switch(S, y, i, W)
     _rhs(S, y, K[0], W)
+    if cnt[K_HIST] == 0:
+        _record(H, 0, t, y, S, W)
+        _copy1(H.dy[0], K[0])
+        cnt[K_HIST] = 1
     cnt[K_RHS] += 1
     _events(S, y, W, g_prev, BAND)
     weight = mass * np.sqrt(gravity[0] ** 2 + gravity[1] ** 2 + gravity[2] ** 2)
@@ -755,18 +781,9 @@ def run(arrays, y, t, history, scratch):
         elif forced >= n:
             changed = pad_event(mu, y, forced - n, P, sliding, Xt)
         k = cnt[K_HIST]                                # record as committed (a switching leg: before it)
-        if k > 0 and t <= H_t[k - 1]:
+        if k > 0 and t <= H.t[k - 1]:
             k -= 1                                     # an event at the start of a step replaces its record
-        H_t[k] = t
-        _copy1(H_y[k], y)
-        for i in range(n):
-            on = contact[i] > 0
-            for c in range(n_cell):
-                H_d[k, i, c], H_f[k, i, c] = (dt[i, c], ft[i, c]) if on else (np.nan, 0.0)
-            for c in range(3):
-                H_X[k, i, c] = Xt[i, c] if on else 0.0
-        _copy2(H_P[k], P)
-        _copy1(H_c[k], contact)
+        _record(H, k, t, y, S, W)
         if forced < 0 and not changed:
             _copy1(K[0], K[6])                        # first same as last: memory updates keep the force
         else:
@@ -779,7 +796,7 @@ def run(arrays, y, t, history, scratch):
             for i in range(n):
                 if contact[i] and slt[i]:
                     P[i, 0], P[i, 1], P[i, 2] = Pt[i, 0], Pt[i, 1], Pt[i, 2]
-        _copy1(H_dy[k], K[0])
+        _copy1(H.dy[k], K[0])
         cnt[K_HIST] = k + 1
         _events(S, y, W, g_prev, BAND)
         # A footpad that is out of reach from the start (a touchdown or slide start leaving it beyond the
@@ -793,7 +810,7 @@ def run(arrays, y, t, history, scratch):
                 armed[i] = LOCKED
                 _rhs(S, y, K[0], W)
                 cnt[K_RHS] += 1
-                _copy1(H_dy[k], K[0])
+                _copy1(H.dy[k], K[0])
                 _events(S, y, W, g_prev, BAND)
         if fixed:
             h = ctl[C_FIXED]
@@ -806,6 +823,6 @@ def run(arrays, y, t, history, scratch):
         status = _monitor(S, y, t, h_acc)
         if status >= 0:
             return status, t
-        if cnt[K_HIST] >= len(H_t):
+        if cnt[K_HIST] >= len(H.t):
             return BUFFER, t
     return END, t

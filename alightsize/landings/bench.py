@@ -109,6 +109,8 @@ def scipy_landing(cfg: SceneConfig, ctl: Controls, method: str) -> tuple[dict, i
     s = cfg.scene
     run = _Run(s, ctl)
     y = initial_state(s, run)
+    for i in np.flatnonzero(run.armed == lk.TOUCH):
+        lk.switch(run.arrays, y, int(i), run.work)
     n = run.n
     n_g = lk.n_events(n, run.C)
     work, g_prev, g = run.work, np.empty(n_g), np.empty(n_g)
