@@ -1,11 +1,11 @@
 """Named values passed between compiled functions as one pointer (a numba StructRef), for the step loop.
 
-Numba passes every array of a call's arguments as its ~8 fields (data, shape, strides, ...), and builds a Python
-wrapper unboxing each: the step loop's functions took ~35 arrays each, and compiling them took a minute. As one
-bundle a call passes one pointer. Measured on a chain of 20 functions reading a set of 30 arrays: 12.0 s to
-compile as a tuple, 4.1 s as a bundle built in compiled code (3.6 s for a tuple of 3).
-Bundles are built in compiled code: an entry point called from Python receives plain arrays and bundles them
-(run as Python, with numba's JIT disabled, a bundle is a SimpleNamespace).
+Numba passes every array of a call's arguments as its ~8 fields (data, shape, strides, ...); the step loop's
+functions took ~35 arrays each. As one bundle a call passes one pointer: configuration 2's impact ran 23 %
+faster and the 5 lb footpad scene 25 % (docs/notes/simulator-log.md); the first compile did not change
+measurably (its time is in the functions' bodies). Bundles are built in compiled code: an entry point called
+from Python receives plain arrays and bundles them (run as Python, with numba's JIT disabled, a bundle is a
+SimpleNamespace).
 """
 
 from __future__ import annotations
@@ -31,6 +31,8 @@ def bundler(fields: str):
 
     def bundle(*values):
         return SimpleNamespace(**dict(zip(names, values)))     # run as Python (NUMBA_DISABLE_JIT)
+
+    bundle.fields = tuple(names)                               # for callers that pack the values by name
 
     @overload(bundle)
     def _bundle(*values):

@@ -184,11 +184,13 @@ class _Run:
                                  -1.0 if ctl.energy_check_from is None else ctl.energy_check_from])
         attach = np.array([leg.attach for leg in scene.legs])
         self.order = np.argsort(np.arctan2(attach[:, 1], attach[:, 0])).astype(np.int64)
-        # The compiled functions' view of the landing (landing_kernel.LANDING's fields in order).
-        self.arrays = (self.geo, self.cells, scene.mass, scene.inertia, scene.gravity, self.mu, self.bottoming,
-                       scene.up, scene.body_points, self.order, self.mem, self.contact, self.P, self.sliding,
-                       self.shape, self.armed, self.cev, self.energy, self.last, self.ctl_arr, self.cnt,
-                       self.run_state)
+        # The compiled functions' view of the landing, in landing_kernel.LANDING's order.
+        named = dict(geo=self.geo, cells=self.cells, mass=scene.mass, inertia=scene.inertia, gravity=scene.gravity,
+                     mu=self.mu, bottoming=self.bottoming, up=scene.up, body=scene.body_points, order=self.order,
+                     mem=self.mem, contact=self.contact, P=self.P, sliding=self.sliding, shape=self.shape,
+                     armed=self.armed, cev=self.cev, energy=self.energy, last=self.last, ctl=self.ctl_arr,
+                     cnt=self.cnt, run_state=self.run_state)
+        self.arrays = tuple(named[name] for name in lk.LANDING.fields)
         self._grow(1024)
 
     def _grow(self, size: int):
@@ -208,8 +210,8 @@ class _Run:
 
     def loop(self, y: np.ndarray, t: float) -> tuple[int, float]:
         while True:
-            status, t = lk.run(self.arrays, y, t, (self.H_t, self.H_y, self.H_dy, self.H_d, self.H_f, self.H_X,
-                                                   self.H_P, self.H_c), self.scratch)
+            history = tuple(getattr(self, "H_" + name) for name in lk.HISTORY.fields)
+            status, t = lk.run(self.arrays, y, t, history, self.scratch)
             if status == lk.BUFFER:
                 self._grow(2 * len(self.H_t))
             else:

@@ -64,14 +64,15 @@ FACE_GAP = 1e-3     # m: an armed footpad touching down this far above the surfa
 PATH_FLOOR = 100.0  # event_tol: steps this short or shorter skip the footpad path error (_error_norm)
 
 # Compiled functions that only compiled code calls (they take bundles, which Python cannot build): no Python or C
-# wrapper is compiled for them (~6 s of a first compile).
+# wrapper is compiled for them.
 _inner = njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
-# The step loop's functions take their arrays as bundles (bundle.py): S, the landing (its scene and memory, in
-# the order of `run`'s `arrays`); W, the legs' state at one evaluation (new_work); T, the step's scratch.
+# The step loop's functions take their arrays as bundles (bundle.py): S, the landing (its scene and memory; `run`
+# takes them in LANDING.fields order); W, the legs' state at one evaluation (new_work); T, the step's scratch;
+# H, the record (`run`'s history, in HISTORY.fields order).
 LANDING = bundler("geo cells mass inertia gravity mu bottoming up body order mem contact P sliding shape armed cev "
                   "energy last ctl cnt run_state")
 WORK = bundler("Pt slt dt ft Xt mt rt")
-STEP = bundler("K y1 err g_prev g1 g_lo y_lo yt gm ga gb")
+STEP = bundler("K y1 g_prev g1 g_lo y_lo yt gm ga gb")
 HISTORY = bundler("t y dy d f X P c")
 
 
@@ -643,7 +644,7 @@ def run(arrays, y, t, history, scratch):
     Legs marked TOUCH touch down first, and an empty record gets its first row. Returns (status, t). Every
     array is used through a view without reference counts (borrow.py): the caller holds them all for the call."""
     K, y1, err, g_prev, g1, g_lo, y_lo, yt, gm, ga, gb, work, work_lo = borrowed(scratch)
-    S, T = LANDING(*borrowed(arrays)), STEP(K, y1, err, g_prev, g1, g_lo, y_lo, yt, gm, ga, gb)
+    S, T = LANDING(*borrowed(arrays)), STEP(K, y1, g_prev, g1, g_lo, y_lo, yt, gm, ga, gb)
     W, W_lo, H, y = WORK(*work), WORK(*work_lo), HISTORY(*borrowed(history)), borrowed(y)
     mass, gravity, mu, mem, contact, P, sliding, armed = S.mass, S.gravity, S.mu, S.mem, S.contact, S.P, S.sliding, \
         S.armed
