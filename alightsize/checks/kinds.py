@@ -11,6 +11,7 @@ from typing import Callable
 from alightsize.checks import plates
 
 from alightsize.checks import stress
+from alightsize.checks.rules import RULES, DEFAULT_RULES, Rules
 from alightsize.common.config import Node
 from alightsize.common.trace import Step
 from alightsize.model.materials import Material
@@ -57,11 +58,11 @@ def _p(node: Node, name: str, dim: str) -> float | None:
 
 # ---------------------------------------------------------------- parameter readers
 
-def _read_load(node: Node) -> dict:
+def _read_load(node: Node, rules: Rules) -> dict:
     return {"P": node.quantity("load", "force")}
 
 
-def _read_moment(node: Node) -> dict:
+def _read_moment(node: Node, rules: Rules) -> dict:
     """A moment given directly, or as force x arm (M = P l, App. IV)."""
     if node.has("moment"):
         return {"M": node.quantity("moment", "moment")}
@@ -70,75 +71,75 @@ def _read_moment(node: Node) -> dict:
     raise node.error("moment", "a moment (\"16150 lbf*in\") or moment_force and moment_arm", "neither")
 
 
-def _read_axial_and_moment(node: Node) -> dict:
-    return {**_read_load(node), **_read_moment(node)}
+def _read_axial_and_moment(node: Node, rules: Rules) -> dict:
+    return {**_read_load(node, rules), **_read_moment(node, rules)}
 
 
-def _read_buckling(node: Node) -> dict:
+def _read_buckling(node: Node, rules: Rules) -> dict:
     """`formula`: "euler" (App. IV) or "johnson_euler" (Johnson's parabola below the transition slenderness)."""
-    return {**_read_load(node), "L": node.quantity("length", "length"),
-            "formula": node.string("formula", "euler", choices=("euler", "johnson_euler"))}
+    return {**_read_load(node, rules), "L": node.quantity("length", "length"),
+            "formula": node.string("formula", rules.column, choices=("euler", "johnson_euler"))}
 
 
-def _read_local(node: Node) -> dict:
-    out = _read_load(node)
+def _read_local(node: Node, rules: Rules) -> dict:
+    out = _read_load(node, rules)
     if node.has("moment") or node.has("moment_force"):
-        out.update(_read_moment(node))
+        out.update(_read_moment(node, rules))
     out["t"] = _p(node, "wall", "length")
-    out["formula"] = node.string("formula", "app_iv", choices=("app_iv", "sp8007"))   # 0.4 E t / D, or SP-8007
+    out["formula"] = node.string("formula", rules.local, choices=("app_iv", "sp8007"))   # 0.4 E t / D, or SP-8007
     return out
 
 
-def _read_bearing(node: Node) -> dict:
+def _read_bearing(node: Node, rules: Rules) -> dict:
     return {"P": sum(node.parse_quantity("loads", v, "force") for v in _list(node, "loads")),
             "d": _p(node, "diameter", "length"), "t": node.quantity("bearing_length", "length")}
 
 
-def _read_double_shear(node: Node) -> dict:
+def _read_double_shear(node: Node, rules: Rules) -> dict:
     comps = [node.parse_quantity("loads", v, "force", positive=False) for v in _list(node, "loads")]
     return {"components": tuple(comps), "d": _p(node, "diameter", "length"),
             "planes": node.integer("planes", 2, minimum=1)}
 
 
-def _read_pin(node: Node) -> dict:
+def _read_pin(node: Node, rules: Rules) -> dict:
     comps = [node.parse_quantity("loads", v, "force", positive=False) for v in _list(node, "loads")]
     return {"components": tuple(comps), "allowable_load": node.quantity("allowable_load", "force")}
 
 
-def _read_ring(node: Node) -> dict:
+def _read_ring(node: Node, rules: Rules) -> dict:
     return {"P": node.quantity("load", "force"), "span": node.quantity("span", "length")}
 
 
-def _read_cone(node: Node) -> dict:
+def _read_cone(node: Node, rules: Rules) -> dict:
     return {"P": node.quantity("load", "force"), "t": node.quantity("thickness", "length")}
 
 
-def _read_theory(node: Node) -> dict:
+def _read_theory(node: Node, rules: Rules) -> dict:
     """`theory`: "app_iv" ((sigma_r + sigma_t)/2 against Fcy/2), "tresca" or "von_mises" (principal stresses,
     sigma_z = 0, against Fcy); `equivalent_radius`: Roark's r0' for a load circle r0 < 0.5 t."""
-    return {"theory": node.string("theory", "app_iv", choices=("app_iv", "tresca", "von_mises")),
-            "r0_equivalent": node.boolean("equivalent_radius", False)}
+    return {"theory": node.string("theory", rules.plate, choices=("app_iv", "tresca", "von_mises")),
+            "r0_equivalent": node.boolean("equivalent_radius", rules.equivalent_radius)}
 
 
-def _read_plate(node: Node) -> dict:
+def _read_plate(node: Node, rules: Rules) -> dict:
     return {"W": node.quantity("load", "force"), "r0": node.quantity("load_radius", "length"),
-            "a": _p(node, "radius", "length"), "t": _p(node, "thickness", "length"), **_read_theory(node)}
+            "a": _p(node, "radius", "length"), "t": _p(node, "thickness", "length"), **_read_theory(node, rules)}
 
 
-def _read_plate_moment(node: Node) -> dict:
-    return {**_read_plate(node), **_read_moment(node), "pi_squared": node.boolean("pi_squared", False)}
+def _read_plate_moment(node: Node, rules: Rules) -> dict:
+    return {**_read_plate(node, rules), **_read_moment(node, rules), "pi_squared": node.boolean("pi_squared", False)}
 
 
-def _read_annular(node: Node) -> dict:
+def _read_annular(node: Node, rules: Rules) -> dict:
     return {"q": node.quantity("pressure", "stress"), "a": _p(node, "radius", "length"),
             "b": _p(node, "inner_radius", "length"), "t": _p(node, "thickness", "length")}
 
 
-def _read_eccentric(node: Node) -> dict:
+def _read_eccentric(node: Node, rules: Rules) -> dict:
     return {"W": node.quantity("load", "force"), "W_total": node.quantity("distributed_load", "force"),
             "p": node.quantity("load_offset", "length"), "r0": node.quantity("load_radius", "length"),
             "a": _p(node, "radius", "length"), "a_t": _p(node, "radius_tangential", "length"),
-            "t": _p(node, "thickness", "length"), **_read_theory(node)}
+            "t": _p(node, "thickness", "length"), **_read_theory(node, rules)}
 
 
 def _list(node: Node, name: str) -> list:
@@ -416,7 +417,7 @@ def _plate_eccentric(p, s, mat) -> Outcome:
 
 
 # kind -> (reader of config parameters, evaluator, material properties it needs)
-KINDS: dict[str, tuple[Callable[[Node], dict], Callable[[dict, Section, Material], Outcome], tuple[str, ...]]] = {
+KINDS: dict[str, tuple[Callable[[Node, Rules], dict], Callable[[dict, Section, Material], Outcome], tuple[str, ...]]] = {
     "compression": (_read_load, _compression, ("yield_strength",)),
     "tension": (_read_load, _tension, ("yield_strength",)),
     "bending": (_read_moment, _bending, ("yield_strength",)),
@@ -470,9 +471,10 @@ def out_of_range(check: Check, section: Section) -> tuple[str, str, str] | None:
     return None
 
 
-def read_check(node: Node) -> Check:
+def read_check(node: Node, rules: Rules = RULES[DEFAULT_RULES]) -> Check:
+    """A check table; keys it does not give take their formula from `rules`."""
     kind = node.string("kind", choices=tuple(KINDS))
-    params = KINDS[kind][0](node)
+    params = KINDS[kind][0](node, rules)
     note = node.string("note", "")
     node.finish()
     replaces = {key: dim for key, dim in STANDS_IN.get(kind, {}).items() if node.has(key)}

@@ -8,6 +8,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from alightsize.common.config import Node, load_toml
+from alightsize.checks.rules import DEFAULT_RULES, RULES
 from alightsize.loads.config import LoadsConfig, read_loads
 from alightsize.loads.quasi_static import LoadReference, LoadsResult, attach, run_loads, validate_references
 from alightsize.model.materials import Material, library
@@ -35,6 +36,7 @@ class DesignSpec:
     loads: LoadsConfig | None = None
     landings: LandingSpec | None = None
     weight_goal: float | None = None          # leg-system weight as a fraction of the capsule
+    rules: str = DEFAULT_RULES                # the checks' formulas where a check names none (checks.rules)
 
 
 @dataclass(frozen=True)
@@ -56,9 +58,11 @@ class DesignConfig:
     weight_goal: float | None = None
 
 
-def read_items(nodes: tuple[Node, ...], mats: dict[str, Material], required: float, root: Node) -> tuple[Item, ...]:
+def read_items(nodes: tuple[Node, ...], mats: dict[str, Material], required: float, root: Node,
+               rules: str) -> tuple[Item, ...]:
     """Read item tables (copies: a node can be read again once loads are known); names unique."""
-    items = tuple(read_item(Node(n.file, n.path, copy.deepcopy(n.data), root.context), mats, required) for n in nodes)
+    items = tuple(read_item(Node(n.file, n.path, copy.deepcopy(n.data), root.context), mats, required, RULES[rules])
+                  for n in nodes)
     names = [i.name for i in items]
     dup = next((n for n in names if names.count(n) > 1), None)
     if dup:
@@ -76,6 +80,7 @@ def read_design(path: str | Path) -> DesignSpec:
     title = d.string("title", configuration)
     capsule = d.quantity("capsule_mass", "mass", default=None)
     legs = d.integer("legs", 4)
+    rules = d.string("rules", DEFAULT_RULES, choices=tuple(RULES))
     extra = [path.parent / p for p in d.strings("materials", [])]
     d.finish()
     rep = root.table("report", optional=True)
@@ -96,10 +101,10 @@ def read_design(path: str | Path) -> DesignSpec:
     land_node = root.table("landings", optional=True)
     landings = read_landing_spec(land_node, path, loads) if land_node is not None else None
     nodes = tuple(root.tables("item", label="name"))
-    read_items(nodes, mats, required, root)
+    read_items(nodes, mats, required, root, rules)
     root.finish()
     return DesignSpec(path, configuration, title, capsule, legs, units, required, decimals, mats, nodes, loads,
-                      landings)
+                      landings, rules=rules)
 
 
 def _loads_config(root: Node, path: Path) -> LoadsConfig | None:
@@ -129,7 +134,7 @@ def prepare(spec: DesignSpec, landings_dir: Path | None = None, progress: bool =
         attach(root, loads)
     else:
         validate_references(root, None)
-    items = read_items(spec.items, spec.materials, spec.required, root)
+    items = read_items(spec.items, spec.materials, spec.required, root, spec.rules)
     return DesignConfig(spec.path, spec.configuration, spec.title, spec.capsule_mass, spec.legs, spec.units,
                         spec.required, spec.decimals, items, loads, tuple(root.context.get("load_references", ())),
                         landings, spec.weight_goal)

@@ -7,6 +7,7 @@ from math import inf
 
 from alightsize.common import units
 from alightsize.checks.kinds import Check, Outcome, out_of_range, read_check
+from alightsize.checks.rules import Rules
 from alightsize.common.config import Node
 from alightsize.common.errors import InputError
 from alightsize.loads.quasi_static import Unloaded
@@ -86,7 +87,7 @@ def _read_size(node: Node, section: Section | None, checks: tuple[Check, ...]) -
     return SizeSpec(dim, low, high, gauges)
 
 
-def read_item(node: Node, materials: dict[str, Material], required_default: float) -> Item:
+def read_item(node: Node, materials: dict[str, Material], required_default: float, rules: Rules) -> Item:
     name = node.string("name")
     count = node.integer("count", 1)
     mat = lookup(materials, node)
@@ -96,7 +97,7 @@ def read_item(node: Node, materials: dict[str, Material], required_default: floa
     checks = []
     for c in node.tables("check", optional=True, label="kind"):
         try:
-            checks.append(read_check(c))
+            checks.append(read_check(c, rules))
         except Unloaded:                       # a derived check of a member never loaded in that sense
             pass
     checks = tuple(checks)

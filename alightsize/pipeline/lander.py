@@ -36,7 +36,8 @@ from alightsize.model.materials import library
 from alightsize.model.scene_config import LANDER_ONLY, SceneConfig, read_scene
 from alightsize.pipeline.config import UNIT_SYSTEMS, DesignSpec, read_design, read_items
 from alightsize.pipeline.landings import LandingSpec
-from alightsize.pipeline.members import RULES, member_item
+from alightsize.checks.rules import DEFAULT_RULES, RULES
+from alightsize.pipeline.members import member_item
 
 SCENE_TABLES = ("capsule", "cells", "legs", "terrain", "initial", "controls", "output")
 ALL_CONFIGURATIONS = "all"           # the combined envelope of App. III cell variants when none is named
@@ -311,7 +312,7 @@ def read_lander(path: str | Path, overrides: dict | None = None) -> Lander:
     if not NAME.fullmatch(name):
         raise head.error("name", "1-31 letters, digits, '_', '.' or '-' (it names files and sheets)", repr(name))
     title = head.string("title", name)
-    rules = head.string("rules", "current", choices=tuple(RULES))
+    rules = head.string("rules", DEFAULT_RULES, choices=tuple(RULES))
     extra = [path.parent / p for p in head.strings("materials", [])]
     for p in extra:
         if not p.exists():
@@ -344,14 +345,14 @@ def read_lander(path: str | Path, overrides: dict | None = None) -> Lander:
     if not nodes:
         raise root.error("members", "at least one [members.NAME] table or [[item]]", "neither")
     validate_references(root, loads)
-    read_items(tuple(nodes), mats, req.required, root)
+    read_items(tuple(nodes), mats, req.required, root, rules)
     root.finish()
     study = landing_cases(path, name, req, len(scene.scene.legs), scene_over)
     member_loads = (partial(telescoping_dynamic_envelope, leg=loads.telescoping) if loads.telescoping
                     else partial(dynamic_envelope, truss=loads.cases[0].truss))
     landings = LandingSpec(study, envelopes, "criteria", member_loads)
     spec = DesignSpec(path, name, title, scene.scene.mass, len(scene.scene.legs), units, req.required, req.decimals,
-                      mats, tuple(nodes), loads, landings, req.weight_goal)
+                      mats, tuple(nodes), loads, landings, req.weight_goal, rules)
     return Lander(spec, scene, req)
 
 

@@ -16,14 +16,13 @@ formulas (Euler only, 0.4 E t / D, (sigma_r + sigma_t)/2 against Fcy/2).
 
 from __future__ import annotations
 
+from alightsize.checks.rules import RULES, Rules
 from alightsize.common.config import Node
 from alightsize.common.errors import InputError
 from alightsize.loads.quasi_static import TELESCOPING
 from alightsize.loads.telescoping import TelescopingLeg
 from alightsize_sim.articulated_statics import MEMBERS
 
-RULES = {"current": {"column": "johnson_euler", "local": "sp8007", "plate": "tresca", "r0": True},
-         "app_iv": {"column": "euler", "local": "app_iv", "plate": "app_iv", "r0": False}}
 TELESCOPING_MEMBERS = ("lower_tube", "upper_tube", "axial_cap", "pad_plate", "swivel_pin")
 ARTICULATED_ROLES = ("truss", "rod", "pin")
 # what a member table may say besides its derived checks (passed on to the item)
@@ -39,19 +38,19 @@ def _ref(env: str, member: str, sense: str = "magnitude") -> dict:
     return {"envelope": env, "member": member, "sense": sense, "optional": True}
 
 
-def _tube(load: dict, rules: dict, moment: tuple[dict, str] | None, column: str | None) -> list[dict]:
+def _tube(load: dict, rules: Rules, moment: tuple[dict, str] | None, column: str | None) -> list[dict]:
     """Axial (or combined) stress, local buckling and, with a column length, column buckling of a tube."""
     bend = {"moment_force": moment[0], "moment_arm": moment[1]} if moment else {}
     out = [{"kind": "combined", "load": load, **bend} if moment else {"kind": "compression", "load": load}]
     if column:
-        out.append({"kind": "column_buckling", "load": load, "length": column, "formula": rules["column"]})
-    out.append({"kind": "local_buckling", "load": load, **bend, "formula": rules["local"]})
+        out.append({"kind": "column_buckling", "load": load, "length": column, "formula": rules.column})
+    out.append({"kind": "local_buckling", "load": load, **bend, "formula": rules.local})
     return out
 
 
-def _plate(kind: str, load: dict, node: Node, rules: dict) -> list[dict]:
-    return [{"kind": kind, "load": load, "load_radius": node.raw("load_radius"), "theory": rules["plate"],
-             "equivalent_radius": rules["r0"]}]
+def _plate(kind: str, load: dict, node: Node, rules: Rules) -> list[dict]:
+    return [{"kind": kind, "load": load, "load_radius": node.raw("load_radius"), "theory": rules.plate,
+             "equivalent_radius": rules.equivalent_radius}]
 
 
 def _pin(loads: list[dict], node: Node) -> list[dict]:
@@ -65,7 +64,7 @@ def _pin(loads: list[dict], node: Node) -> list[dict]:
             {"kind": "bearing", "loads": loads, "bearing_length": t}]
 
 
-def telescoping_checks(name: str, node: Node, leg: TelescopingLeg, rules: dict) -> list[dict]:
+def telescoping_checks(name: str, node: Node, leg: TelescopingLeg, rules: Rules) -> list[dict]:
     """The checks of a telescoping-leg member from the App. III free body (AFFDL-TR-66-33 App. III-IV)."""
     f = {k: _ref(TELESCOPING, k) for k in ("AF1", "P1", "P2", "P3")}
     arm = _si(leg.length - leg.pad_lever, "m")          # P1 (rho - a) = w2 chi^2 / 6 at the pads (App. III)
@@ -81,7 +80,7 @@ def telescoping_checks(name: str, node: Node, leg: TelescopingLeg, rules: dict) 
     return _pin([f["AF1"], f["P2"]], node)
 
 
-def articulated_checks(name: str, node: Node, envelope: str, rules: dict) -> list[dict]:
+def articulated_checks(name: str, node: Node, envelope: str, rules: Rules) -> list[dict]:
     """The checks of an App. III truss member under its envelope extremes (AFFDL-TR-66-33 App. III-IV)."""
     role = node.string("role", "truss", choices=ARTICULATED_ROLES)
     tension = {"kind": "tension", "load": _ref(envelope, name, "tension")}
