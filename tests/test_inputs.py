@@ -202,3 +202,31 @@ def test_report_labels_a_checks_load_key_by_item_and_kind():
     truss = cfg.items[0]
     assert truss.checks[1].where == 'item["Upper Truss"].check["column_buckling"]'
     assert _reference_label(cfg, truss.checks[1].where + ".load") == "Upper Truss / column buckling (load)"
+
+
+@pytest.mark.parametrize("text, dim", [
+    ("9**9**9 in", "length"),        # arithmetic is never evaluated (it would not return)
+    ("2**2000 in", "length"),        # nor overflow
+    ("-1e400 deg", "angle"),         # a number beyond double range is not finite
+    ("inf deg", "angle"),
+    ("nan m", "length"),
+    ("1e308 km", "length"),          # finite as written, infinite in SI
+    ("3 in^99", "second_moment"),    # unit powers are one digit
+    ("__import__('os') m", "length"),
+])
+def test_quantities_are_a_number_and_a_unit_never_evaluated(text, dim):
+    from alightsize.common.units import parse
+    with pytest.raises(ValueError):
+        parse(text, dim)
+
+
+@pytest.mark.parametrize("text, dim, si", [
+    ("16150 lbf*in", "moment", 16150 * 4.4482216152605 * 0.0254),   # exact definitions of lbf and in
+    ("0.478 in^4", "second_moment", 0.478 * 0.0254 ** 4),
+    ("3 m*s**-1", "velocity", 3.0),
+    ("1.5e-3 m", "length", 1.5e-3),
+    ("-2.4 m/s", "velocity", -2.4),
+])
+def test_quantities_in_the_forms_the_docs_use_parse_to_si(text, dim, si):
+    from alightsize.common.units import parse
+    assert parse(text, dim) == pytest.approx(si, rel=1e-12)      # conversion factors are exact to the last digit

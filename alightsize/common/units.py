@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+import re
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -68,27 +70,46 @@ def parse(text: str | float | int, dim: str) -> float:
     return _parse_text(str(text).strip(), dim)
 
 
+# A quantity is a number and a unit; nothing is evaluated ("2**2000 in" and "9**9**9 in" are refused, not
+# computed). A unit is names joined by *, / and small integer powers (^2, **-1, in^4).
+_QUANTITY = re.compile(r"([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*)")
+_UNIT = re.compile(r"(?=[A-Za-z_°µ(]|$)(?:[A-Za-z_°µ][A-Za-z_0-9°µ]*|[*/·() ]|\^ ?-?\d(?!\d)|\*\* ?-?\d(?!\d))*")
+
+
+def _split(text: str) -> tuple[float, str]:
+    """(number, unit text) of "3750 lbf"; ValueError when the text is not a number followed by a unit."""
+    m = _QUANTITY.fullmatch(text)
+    if m is None or not _UNIT.fullmatch(m.group(2)):
+        raise ValueError("a number followed by a unit")
+    value = float(m.group(1))
+    if not math.isfinite(value):
+        raise ValueError("a finite number")
+    return value, m.group(2).replace("·", "*")
+
+
 @lru_cache(maxsize=4096)
 def _parse_text(text: str, dim: str) -> float:
     """`parse` of a text, memoized: a study reads the same quantities for every landing (pint is slow)."""
     ureg = registry()
     try:
-        q = ureg.Quantity(text)
+        number, unit = _split(text)
+        q = ureg.Quantity(number, unit)
     except Exception as exc:  # pint raises many kinds on garbage
         raise ValueError(f"a quantity like \"{example(dim)}\" (could not read it: {exc})") from None
-    if not isinstance(q, pint.Quantity):
-        q = ureg.Quantity(q)
     if dim == "angle":
-        if q.dimensionless:
-            return float(q.to("rad").magnitude)
-        raise ValueError(f"an angle like \"{example(dim)}\"")
+        if not q.dimensionless:
+            raise ValueError(f"an angle like \"{example(dim)}\"")
+        value = float(q.to("rad").magnitude)
+        if not math.isfinite(value):
+            raise ValueError("a finite angle")
+        return value
     want = DIMS[dim]
     if dimension_of(q) != (want.mass, want.length, want.time):
         hint = _HINTS.get((dim, dimension_of(q)), "")
         article = "an" if dim[0] in "aeiou" else "a"
         raise ValueError(f"{article} {dim} like \"{example(dim)}\"{hint}")
     value = float(q.to_base_units().magnitude)
-    if value != value or value in (float("inf"), float("-inf")):
+    if not math.isfinite(value):
         raise ValueError("a finite quantity")
     return value
 
