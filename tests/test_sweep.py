@@ -301,3 +301,24 @@ def test_a_grown_grid_computes_only_its_new_points_and_keeps_no_orphaned_rows(tm
     judged = dict(con.execute("SELECT run_id, criteria_failed FROM runs"))
     assert any(v > 1000 for v in onsets.values())
     assert all(("XDD(1) onset" in judged[k] or "XDD(2) onset" in judged[k]) == (v > 1000) for k, v in onsets.items())
+
+
+@pytest.mark.parametrize("key", ["../../x", "/tmp/x", "a/b", "a\\b", ".hidden", "-x", ""])
+def test_a_scene_key_that_would_name_a_file_outside_the_output_exits_2(tmp_path, key, capsys):
+    """Scene keys and run ids name history files: separators, '..' and absolute paths are refused, so no
+    file can be written outside --out."""
+    study = _study(tmp_path, 1).read_text().replace('c2 = "', f'{json.dumps(key)} = "')
+    path = tmp_path / "bad.toml"
+    path.write_text(study.replace("[study]", "[study]\nhistory = true"))
+    assert main(["sweep", str(path), "--out", str(tmp_path / "out"), "--serial"]) == 2
+    assert "scenes." in capsys.readouterr().err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.toml", "study.toml"]
+
+
+def test_a_run_table_id_with_a_separator_exits_2(tmp_path, capsys):
+    (tmp_path / "runs.csv").write_text("run,scene\n../../x,c2\n")
+    path = tmp_path / "t.toml"
+    path.write_text(f'[study]\nhistory = true\n[scenes]\nc2 = "{SCENE}"\n[runs]\ntable = "runs.csv"\n')
+    assert main(["sweep", str(path), "--out", str(tmp_path / "out"), "--serial"]) == 2
+    assert "runs.csv line 2, run" in capsys.readouterr().err
+    assert not (tmp_path / "out").exists()

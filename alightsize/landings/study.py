@@ -22,6 +22,7 @@ import csv
 import hashlib
 import itertools
 import json
+import re
 import string
 from dataclasses import dataclass
 from functools import lru_cache
@@ -43,6 +44,9 @@ BOTTOMED_KIND = {"axial": "axial", "rot": "rotational_pad", "upper": "psi", "low
 # l. 1132, 1163; Sec. II.B: every run stopped by the time limit was called walking).
 PRINTED_AS = {"time_out": "walking"}
 MAX_RUNS = 1_000_000
+# run ids and scene keys name history files in the output folder: no separators, no leading dot
+RUN_ID = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_.-]{0,63}")
+RUN_ID_RULE = "1-64 letters, digits, '_', '.' or '-', not starting with '.' or '-' (it names files)"
 
 
 @dataclass(frozen=True)
@@ -113,6 +117,8 @@ def _table_points(path: Path, runs_node: Node, scenes: dict, compare: Node | Non
             if row.get(col) not in options:
                 raise InputError(str(table), f"{where}, {col}", f"one of {sorted(options)}", repr(row.get(col)))
             over.update(options[row[col]])
+        if not RUN_ID.fullmatch(row[id_col]):
+            raise InputError(str(table), f"{where}, {id_col}", RUN_ID_RULE, repr(row[id_col]))
         points.append((row[id_col], row[scene_col], over, dict(row), row[ref_col] if ref_col else None))
     return points
 
@@ -172,6 +178,9 @@ def read_study(path: str | Path) -> Study:
     head.string("note", "")
     scenes_node = root.table("scenes")
     scenes = {str(k): path.parent / str(v) for k, v in scenes_node.data.items()}
+    for k in scenes:
+        if not RUN_ID.fullmatch(k):
+            raise InputError(str(path), f"scenes.{json.dumps(k)}", "a scene key of " + RUN_ID_RULE, repr(k))
     for k, f in scenes.items():
         if not f.is_file():
             raise scenes_node.error(k, "the path of a scene TOML (relative to the study)", f"{str(f)!r}: no such file")
