@@ -322,3 +322,11 @@ def test_a_run_table_id_with_a_separator_exits_2(tmp_path, capsys):
     assert main(["sweep", str(path), "--out", str(tmp_path / "out"), "--serial"]) == 2
     assert "runs.csv line 2, run" in capsys.readouterr().err
     assert not (tmp_path / "out").exists()
+
+
+def test_a_run_table_that_is_not_utf8_exits_2(tmp_path, capsys):
+    (tmp_path / "runs.csv").write_bytes("run,scene\nr\xe9,c2\n".encode("latin-1"))
+    path = tmp_path / "t.toml"
+    path.write_text(f'[study]\n[scenes]\nc2 = "{SCENE}"\n[runs]\ntable = "runs.csv"\n')
+    assert main(["sweep", str(path), "--out", str(tmp_path / "out"), "--serial"]) == 2
+    assert "runs.table" in capsys.readouterr().err

@@ -102,8 +102,11 @@ def _table_points(path: Path, runs_node: Node, scenes: dict, compare: Node | Non
     setters = runs_node.table("set", optional=True)
     choose = runs_node.table("choose", optional=True)
     ref_col = compare.string("column") if compare else None
-    with open(table, newline="", encoding="utf-8") as fh:
-        rows = list(csv.DictReader(fh))
+    try:
+        with open(table, newline="", encoding="utf-8") as fh:
+            rows = list(csv.DictReader(fh))
+    except UnicodeDecodeError as exc:
+        raise runs_node.error("table", "a CSV run table in UTF-8", f"{str(table)!r}: {exc.reason} at byte {exc.start}") from None
     points = []
     for n, row in enumerate(rows, start=2):
         where = f"{table.name} line {n}"
