@@ -156,9 +156,11 @@ def _bench(args) -> int:
 def _scale(args) -> int:
     from alightsize.common.atomic import write_atomic
     from alightsize.weights.scaling import table27
-    if not all(math.isfinite(v) and v > 0 for v in (args.length, args.mass)):
-        raise InputError("(command line)", "--length/--mass", "finite positive scale factors",
-                         f"length {args.length}, mass {args.mass}")
+    from alightsize.weights.scaling import SCALE_RANGE
+    low, high = SCALE_RANGE
+    if not all(low <= v <= high for v in (args.length, args.mass)):      # NaN fails both comparisons
+        raise InputError("(command line)", "--length/--mass", f"scale factors from {low:g} to {high:g}",
+                         f"length {args.length:g}, mass {args.mass:g}")
     factors = table27(args.length, args.mass)
     width = max(map(len, factors))
     print(f"Model-to-full-scale factors (acceleration scale 1), length {args.length:g}, mass {args.mass:g}")

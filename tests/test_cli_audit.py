@@ -131,6 +131,8 @@ def test_scale_json(tmp_path):
     assert doc["schema"] == "alightsize.scale/1" and doc["factors"]["time"] == pytest.approx(2.0)
     assert run("scale", "--length", "-1", "--mass", "2").returncode == 2
     assert run("scale", "--length", "inf", "--mass", "2").returncode == 2    # no Infinity in the JSON
+    assert run("scale", "--length", "1e300", "--mass", "2").returncode == 2  # finite, but its energy factor is not
+    assert run("scale", "--length", "1e4", "--mass", "1e4").returncode == 0  # the range's corner: every factor finite
 
 
 def test_bench_of_an_unknown_scene_exits_2_listing_the_known_ones(tmp_path, capsys):

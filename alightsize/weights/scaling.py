@@ -19,6 +19,11 @@ TABLE27 = {
 }
 
 
+# Model-to-full-scale length and mass factors accepted: any drop test's model, with every Table 27 factor
+# (exponents up to |4| in mass and length) finite in double precision.
+SCALE_RANGE = (1e-4, 1e4)
+
+
 def factor(length: float, mass: float, exponents: tuple[int, int, int]) -> float:
     """Scale factor of a quantity with (mass, length, time) exponents; time scale sqrt(length) (Table 27)."""
     a, b, c = exponents
