@@ -230,3 +230,12 @@ def test_quantities_are_a_number_and_a_unit_never_evaluated(text, dim):
 def test_quantities_in_the_forms_the_docs_use_parse_to_si(text, dim, si):
     from alightsize.common.units import parse
     assert parse(text, dim) == pytest.approx(si, rel=1e-12)      # conversion factors are exact to the last digit
+
+
+@pytest.mark.parametrize("value", ["[" * 5000 + "]" * 5000, "{b=" * 3000 + "1" + "}" * 3000])
+def test_toml_nested_past_the_recursion_limit_exits_2(tmp_path, value):
+    path = tmp_path / "deep.toml"
+    path.write_text(f"a = {value}\n")
+    proc = subprocess.run([sys.executable, "-m", "alightsize", "design", str(path), "--out", str(tmp_path / "o")],
+                          capture_output=True, text=True)
+    assert proc.returncode == 2 and "nested" in proc.stderr and "Traceback" not in proc.stderr

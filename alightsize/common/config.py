@@ -186,4 +186,7 @@ def load_toml(path: str | Path) -> Node:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise InputError(str(path), "", "valid TOML", f"a syntax error: {exc}") from None
+    except RecursionError:
+        raise InputError(str(path), "", "TOML nested less deeply than Python's recursion limit",
+                         "arrays or inline tables nested deeper") from None
     return Node(path, "", data)
