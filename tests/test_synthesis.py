@@ -6,6 +6,7 @@ a stored candidate."""
 from __future__ import annotations
 
 import json
+import re
 import sqlite3
 from math import pi
 from pathlib import Path
@@ -104,6 +105,17 @@ def test_stroke_margin_reads_the_cells_stroke_used(tmp_path):
     assert "stroke_margin = 0.1 " in text
     bad.write_text(text.replace("stroke_margin = 0.1 ", "stroke_margin = 1.0 "))
     with pytest.raises(InputError, match="synthesis.stroke_margin"):
+        read_synthesis(bad)
+
+
+@pytest.mark.parametrize("key, value", [("samples", "1000000000000000000"), ("population", "100000"),
+                                        ("seed", "-1"), ("check_samples", "1e18")])
+def test_a_search_budget_beyond_its_documented_range_exits_2(tmp_path, key, value):
+    """Every count has a finite range (docs/synthesis.md): a budget of 1e18 landings is refused, not attempted."""
+    bad = tmp_path / "bad.toml"
+    text = re.sub(rf"(\[synthesis\]\n(?:.*\n)*?){key} = .*\n", r"\1", EXAMPLE.read_text(), count=1)
+    bad.write_text(text.replace("[synthesis]\n", f"[synthesis]\n{key} = {value}\n", 1))
+    with pytest.raises(InputError, match=f"synthesis.{key}"):
         read_synthesis(bad)
 
 

@@ -13,6 +13,7 @@ from alightsize.common import units
 from alightsize.common.errors import InputError, warn_input
 
 _MISSING = object()
+SEED_MAX = 2**32 - 1      # seeds are 32-bit unsigned integers (numpy.random.default_rng takes them whole)
 _INDEXED = re.compile(r"(\w+)\[(\d+)\]")
 
 
@@ -107,12 +108,13 @@ class Node:
             raise self.error(name, "a finite positive number" if positive else "a finite number", _describe(value))
         return float(value)
 
-    def integer(self, name: str, default: Any = _MISSING, minimum: int = 1) -> int:
+    def integer(self, name: str, default: Any = _MISSING, minimum: int = 1, maximum: int = 1_000_000) -> int:
+        """An integer from `minimum` to `maximum` (every count an input gives has a finite range)."""
         value = self.raw(name, default)
         if value is default and default is not _MISSING:
             return default
-        if isinstance(value, bool) or not isinstance(value, int) or value < minimum:
-            raise self.error(name, f"an integer >= {minimum}", _describe(value))
+        if isinstance(value, bool) or not isinstance(value, int) or not minimum <= value <= maximum:
+            raise self.error(name, f"an integer from {minimum:,} to {maximum:,}", _describe(value))
         return value
 
     def string(self, name: str, default: Any = _MISSING, choices: tuple[str, ...] | None = None) -> str:

@@ -31,7 +31,7 @@ from pathlib import Path
 import numpy as np
 
 from alightsize import __version__
-from alightsize.common.config import Node, load_toml
+from alightsize.common.config import SEED_MAX, Node, load_toml
 from alightsize.landings.dispersions import Dispersion, read_dispersion
 from alightsize.common.errors import InputError
 from alightsize.landings.criteria import Criteria, read_criteria
@@ -205,7 +205,7 @@ def read_study(path: str | Path) -> Study:
         compare.finish()
     disp_node = root.table("dispersions", optional=True)
     dispersions = [read_dispersion(disp_node, k) for k in disp_node.data] if disp_node else []
-    seed = head.integer("seed", None, minimum=0) if dispersions else None
+    seed = head.integer("seed", None, minimum=0, maximum=SEED_MAX) if dispersions else None
     if dispersions and seed is None:
         raise head.error("seed", "an integer seed for the Monte Carlo dispersions", "nothing")
     if dispersions and not head.has("samples"):

@@ -89,7 +89,7 @@ def read_design(path: str | Path) -> DesignSpec:
         rep.finish()
     aud = root.table("audit", optional=True)
     required = aud.number("required_design_factor", 1.2) if aud else 1.2
-    decimals = aud.integer("decimals", None, minimum=0) if aud else None
+    decimals = aud.integer("decimals", None, minimum=0, maximum=12) if aud else None
     if aud:
         aud.finish()
     for p in extra:

@@ -22,7 +22,7 @@ from pathlib import Path
 
 from alightsize_sim.telescoping_leg import TelescopingLeg as SimTelescopingLeg
 
-from alightsize.common.config import Node, load_toml
+from alightsize.common.config import SEED_MAX, Node, load_toml
 from alightsize.landings.criteria import Criteria, read_criteria
 from alightsize.landings.dispersions import Dispersion
 from alightsize.landings.study import Run, Study, _sampled
@@ -149,7 +149,7 @@ def _envelope(node: Node) -> Envelope:
 def _requirements(node: Node) -> Requirements:
     node.allow(("required_design_factor", "decimals", "weight_goal", "criteria", "envelope", "monte_carlo", "note"))
     required = node.number("required_design_factor", 1.25)
-    decimals = node.integer("decimals", None, minimum=0)
+    decimals = node.integer("decimals", None, minimum=0, maximum=12)
     goal = node.number("weight_goal", None)
     if goal is not None and not 0 < goal < 1:
         raise node.error("weight_goal", "the leg system's weight as a fraction of the capsule, in (0, 1)", repr(goal))
@@ -159,8 +159,8 @@ def _requirements(node: Node) -> Requirements:
     samples, seed, scatter = DEFAULT_SAMPLES, 1, 0.0
     if mc:
         mc.allow(("samples", "seed", "cell_scatter", "note"))
-        samples = mc.integer("samples", DEFAULT_SAMPLES, minimum=0)
-        seed = mc.integer("seed", 1, minimum=0)
+        samples = mc.integer("samples", DEFAULT_SAMPLES, minimum=0, maximum=100_000)
+        seed = mc.integer("seed", 1, minimum=0, maximum=SEED_MAX)
         scatter = mc.number("cell_scatter", 0.0, positive=False)
         mc.string("note", "")
         mc.finish()

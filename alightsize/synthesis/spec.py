@@ -30,7 +30,7 @@ from dataclasses import dataclass
 from math import isfinite
 from pathlib import Path
 
-from alightsize.common.config import Node, load_toml
+from alightsize.common.config import SEED_MAX, Node, load_toml
 from alightsize.common.errors import InputError
 from alightsize.common.units import registry
 from alightsize.pipeline.lander import cell_curve, crush_stroke
@@ -139,9 +139,9 @@ def _free(node: Node, root: Node) -> tuple[FreeParameter, ...]:
 
 
 def _budget(node: Node, default: Budget) -> Budget:
-    return Budget(node.integer("generations", default.generations, minimum=0),
-                  node.integer("population", default.population, minimum=2),
-                  node.integer("samples", default.samples, minimum=0) if node.has("samples") else default.samples)
+    return Budget(node.integer("generations", default.generations, minimum=0, maximum=1000),
+                  node.integer("population", default.population, minimum=2, maximum=200),
+                  node.integer("samples", default.samples, minimum=0, maximum=5000) if node.has("samples") else default.samples)
 
 
 def read_synthesis(path: str | Path) -> SynthesisSpec:
@@ -153,10 +153,10 @@ def read_synthesis(path: str | Path) -> SynthesisSpec:
     node = root.table("synthesis")
     node.allow(("seed", "generations", "population", "samples", "check_samples", "check_seed", "stroke_margin",
                 "free", "trade", "note"))
-    seed = node.integer("seed", 1, minimum=0)
+    seed = node.integer("seed", 1, minimum=0, maximum=SEED_MAX)
     budget = _budget(node, Budget(10, 5, None))
-    check_samples = node.integer("check_samples", 1000, minimum=0)
-    check_seed = node.integer("check_seed", seed + 1, minimum=0)
+    check_samples = node.integer("check_samples", 1000, minimum=0, maximum=100_000)
+    check_seed = node.integer("check_seed", seed + 1, minimum=0, maximum=SEED_MAX + 1)
     margin = node.number("stroke_margin", 0.0, positive=False)
     if not 0 <= margin < 1:
         raise node.error("stroke_margin", "a fraction of the stroke in [0, 1)", repr(margin))
