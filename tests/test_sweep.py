@@ -330,3 +330,14 @@ def test_a_run_table_that_is_not_utf8_exits_2(tmp_path, capsys):
     path.write_text(f'[study]\n[scenes]\nc2 = "{SCENE}"\n[runs]\ntable = "runs.csv"\n')
     assert main(["sweep", str(path), "--out", str(tmp_path / "out"), "--serial"]) == 2
     assert "runs.table" in capsys.readouterr().err
+
+
+def test_column_names_from_user_input_are_quoted_identifiers(tmp_path):
+    """A parameter or cell name with quotes and SQL in it is stored as a column of exactly that name."""
+    from alightsize.landings.run_store import RunStore
+    name = 'a"b); DROP TABLE runs; --'
+    store = RunStore(tmp_path / "runs.sqlite")
+    store.put({"run_id": "r1", "status": "done", name: 1.5})
+    store.put({"run_id": "r2", "status": "done", name: 2.5})
+    assert [r[name] for r in store.rows(["r1", "r2"])] == [1.5, 2.5]
+    store.close()

@@ -15,6 +15,12 @@ TIMING = ("wall_s", "worker", "finished_at")
 _FIXED = ("run_id TEXT PRIMARY KEY", "scene TEXT", "scene_hash TEXT", "status TEXT", "outcome TEXT")
 
 
+def _ident(name: str) -> str:
+    """A column name as an SQL identifier: double-quoted, inner quotes doubled (SQLite's quoting rule), so a
+    name from user input (a cell called a"b) never reads as SQL."""
+    return '"' + name.replace('"', '""') + '"'
+
+
 def _sql_type(value) -> str:
     if isinstance(value, bool) or isinstance(value, int):
         return "INTEGER"
@@ -53,10 +59,10 @@ class RunStore:
         """Insert or replace one run and commit it (new columns are added first)."""
         for k, v in row.items():
             if k not in self.columns and v is not None:
-                self.db.execute(f'ALTER TABLE runs ADD COLUMN "{k}" {_sql_type(v)}')
+                self.db.execute(f"ALTER TABLE runs ADD COLUMN {_ident(k)} {_sql_type(v)}")
                 self.columns.append(k)
         keys = [k for k in row if k in self.columns]
-        names = ", ".join(f'"{k}"' for k in keys)
+        names = ", ".join(_ident(k) for k in keys)
         with self.db:
             self.db.execute(f"INSERT OR REPLACE INTO runs ({names}) VALUES ({', '.join('?' * len(keys))})",
                             [row[k] for k in keys])
