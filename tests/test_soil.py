@@ -151,8 +151,22 @@ def test_reader_converts_units_and_rejects_what_it_cannot_read(tmp_path):
     for bad, key in ((good.replace("kPa", "psi"), "c"), (good.replace("16 kN", "16 mN"), "gamma"),
                      (good.replace('"30 deg"', '"30 m"'), "phi"), (good.replace('c = "4 kPa"', 'c = "four kPa"'), "c"),
                      (good.replace("n = 0.5\n", ""), "n"), (good + "mu = 1\n", "mu"),
-                     (good.replace('"2 N/m^(n+1)"', '"0 N/m^(n+1)"').replace('"3 MN', '"0 MN'), "")):
+                     (good.replace('"2 N/m^(n+1)"', '"0 N/m^(n+1)"').replace('"3 MN', '"0 MN'), "k_phi")):
         (tmp_path / "bad.toml").write_text(bad)
         with pytest.raises(InputError) as err:
             read_soil(tmp_path / "bad.toml")
         assert err.value.file.endswith("bad.toml") and err.value.key == key
+
+
+@pytest.mark.parametrize("key, value", [("phi", '"-35 deg"'), ("phi", '"75 deg"'), ("n", "-1.0"), ("n", "40.0"),
+                                        ("k_phi", '"0 kN/m^(n+2)"')])
+def test_a_soil_value_outside_its_range_exits_2_naming_its_key(tmp_path, key, value):
+    """A soil file's key outside its documented range is reported by that key, not as the whole file."""
+    text = {"name": '"s"', "n": "1.0", "k_c": '"0 kN/m^(n+1)"' if key == "k_phi" else '"1.4 kN/m^(n+1)"',
+            "k_phi": '"820 kN/m^(n+2)"', "c": '"0.17 kPa"', "phi": '"35 deg"', "gamma": '"2.43 kN/m^3"'}
+    text[key] = value
+    path = tmp_path / "soil.toml"
+    path.write_text("".join(f"{k} = {v}\n" for k, v in text.items()))
+    with pytest.raises(InputError) as err:
+        read_soil(path)
+    assert err.value.key == key

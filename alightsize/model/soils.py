@@ -13,6 +13,8 @@ from alightsize.common.resources import data_dir
 
 _UNITS = {"k_c": "N/m^(n+1)", "k_phi": "N/m^(n+2)", "c": "Pa", "gamma": "N/m^3"}   # SI base unit of each key
 _PREFIX = {"": 1.0, "k": 1e3, "M": 1e6}
+N_MAX = 3.0              # sinkage exponent: Bekker fits of real soils lie from 0 to about 1.6 (Wong 2008 Ch. 2)
+PHI_MAX_DEG = 60.0       # friction angle: soils lie below about 50 deg; tan^2(45 + phi/2) grows without bound
 
 
 def _quantity(node: Node, key: str) -> float:
@@ -37,17 +39,20 @@ def read_soil(path: str | Path) -> Soil:
     node.allow(("name", "n", "k_c", "k_phi", "c", "phi", "gamma", "source"))
     name = node.string("name")
     n = node.number("n", positive=False)
+    if not 0 <= n <= N_MAX:
+        raise node.error("n", f"a sinkage exponent from 0 to {N_MAX:g} (Bekker fits: 0 to about 1.6)", repr(n))
     values = {k: _quantity(node, k) for k in ("k_c", "k_phi", "c", "gamma")}
+    if values["k_c"] + values["k_phi"] <= 0:
+        raise node.error("k_phi", "k_c + k_phi above zero (a soil that bears a load)", "both zero")
     phi = node.quantity("phi", "angle", positive=False)
+    if not 0 <= phi <= math.radians(PHI_MAX_DEG):
+        raise node.error("phi", f"a friction angle from 0 to {PHI_MAX_DEG:g} deg", repr(node.raw("phi")))
     src = node.table("source", optional=True)
     source = {k: src.string(k) for k in list(src.data)} if src else {}
     if src:
         src.finish()
     node.finish()
-    try:
-        return Soil(n, values["k_c"], values["k_phi"], values["c"], phi, values["gamma"], name, source)
-    except ValueError as exc:
-        raise node.error("", "soil parameters " + str(exc).removeprefix("a soil needs "), "other values") from None
+    return Soil(n, values["k_c"], values["k_phi"], values["c"], phi, values["gamma"], name, source)
 
 
 def soil_presets() -> dict[str, Soil]:
