@@ -239,3 +239,14 @@ def test_toml_nested_past_the_recursion_limit_exits_2(tmp_path, value):
     proc = subprocess.run([sys.executable, "-m", "alightsize", "design", str(path), "--out", str(tmp_path / "o")],
                           capture_output=True, text=True)
     assert proc.returncode == 2 and "nested" in proc.stderr and "Traceback" not in proc.stderr
+
+
+@pytest.mark.parametrize("entry", ['""', '"  "', '"nosuch"', '"telescoping.toml/x"'])
+def test_a_material_path_that_is_empty_or_missing_exits_2_naming_the_key(tmp_path, entry):
+    """An empty path would name the config's own folder (and report another file's keys): refused by key."""
+    text = (EXAMPLES / "telescoping.toml").read_text().replace("legs = 4\n", f"legs = 4\nmaterials = [{entry}]\n", 1)
+    cfg = tmp_path / "t.toml"
+    cfg.write_text(text)
+    with pytest.raises(Exception) as err:
+        read_design(cfg)
+    assert type(err.value).__name__ == "InputError" and err.value.key == "design.materials"

@@ -45,6 +45,18 @@ def read_material(path: str | Path) -> Material:
     return mat
 
 
+def material_paths(node: Node, key: str, base: Path) -> list[Path]:
+    """The extra material files or folders a config lists at `key`, relative to `base` (its folder)."""
+    out = []
+    for text in node.strings(key, []):
+        path = base / text
+        if not text.strip() or not (path.suffix == ".toml" and path.is_file() or path.is_dir()):
+            raise node.error(key, "paths of material files (.toml) or folders of them, relative to this file",
+                             repr(text))
+        out.append(path)
+    return out
+
+
 def library(extra_paths: list[Path] = ()) -> dict[str, Material]:
     """The shipped materials plus those at `extra_paths` (files or folders), keyed by file stem."""
     files = sorted(data_dir("materials").glob("*.toml"))

@@ -11,7 +11,7 @@ from alightsize.common.config import Node, load_toml
 from alightsize.checks.rules import DEFAULT_RULES, RULES
 from alightsize.loads.config import LoadsConfig, read_loads
 from alightsize.loads.quasi_static import LoadReference, LoadsResult, attach, run_loads, validate_references
-from alightsize.model.materials import Material, library
+from alightsize.model.materials import Material, library, material_paths
 from alightsize.pipeline.items import Item, read_item
 from alightsize.pipeline.landings import Landings, LandingSpec, landed, read_landing_spec, run_landings
 
@@ -81,7 +81,7 @@ def read_design(path: str | Path) -> DesignSpec:
     capsule = d.quantity("capsule_mass", "mass", default=None)
     legs = d.integer("legs", 4)
     rules = d.string("rules", DEFAULT_RULES, choices=tuple(RULES))
-    extra = [path.parent / p for p in d.strings("materials", [])]
+    extra = material_paths(d, "materials", path.parent)
     d.finish()
     rep = root.table("report", optional=True)
     units = rep.string("units", "US", choices=UNIT_SYSTEMS) if rep else "US"
@@ -92,9 +92,6 @@ def read_design(path: str | Path) -> DesignSpec:
     decimals = aud.integer("decimals", None, minimum=0, maximum=12) if aud else None
     if aud:
         aud.finish()
-    for p in extra:
-        if not p.exists():
-            raise d.error("materials", "paths of existing material files or folders", str(p))
     mats = library(extra)
     loads = _loads_config(root, path)
     validate_references(root, loads)

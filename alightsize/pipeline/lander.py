@@ -32,7 +32,7 @@ from alightsize.loads.histories import dynamic_envelope, telescoping_dynamic_env
 from alightsize.loads.quasi_static import TELESCOPING, validate_references
 from alightsize.loads.telescoping import TelescopingLeg
 from alightsize.model.gravity import read_gravity
-from alightsize.model.materials import library
+from alightsize.model.materials import library, material_paths
 from alightsize.model.scene_config import LANDER_ONLY, SceneConfig, read_scene
 from alightsize.pipeline.config import UNIT_SYSTEMS, DesignSpec, read_design, read_items
 from alightsize.pipeline.landings import LandingSpec
@@ -313,10 +313,7 @@ def read_lander(path: str | Path, overrides: dict | None = None) -> Lander:
         raise head.error("name", "1-31 letters, digits, '_', '.' or '-' (it names files and sheets)", repr(name))
     title = head.string("title", name)
     rules = head.string("rules", DEFAULT_RULES, choices=tuple(RULES))
-    extra = [path.parent / p for p in head.strings("materials", [])]
-    for p in extra:
-        if not p.exists():
-            raise head.error("materials", "paths of existing material files or folders", str(p))
+    extra = material_paths(head, "materials", path.parent)
     if head.has("gravity"):
         read_gravity(head, "gravity")             # checked here, so an error names [lander], not the scene
     head.string("note", "")
