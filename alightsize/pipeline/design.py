@@ -187,7 +187,7 @@ def summary_json(res: DesignResult) -> dict:
         out["sizing"] = [{"item": s.item, "dimension": s.dimension, "printed_m": s.printed, "sized_m": s.sized,
                           "design_factor_printed": _finite(s.factor_printed), "design_factor_sized": _finite(s.factor_sized),
                           "weight_printed_kg": s.weight_printed, "weight_sized_kg": s.weight_sized,
-                          "feasible": s.feasible} for s in res.sizings]
+                          "feasible": s.feasible, "at_bound": s.at_bound} for s in res.sizings]
     return out
 
 
