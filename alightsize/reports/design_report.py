@@ -17,6 +17,7 @@ from alightsize.checks.audit import failure_label
 from alightsize.common.trace import Step
 from alightsize.common.units import fmt, to_display, unit_label
 from alightsize.pipeline.design import DesignResult, criteria_counts, governing_cases, summary_json
+from alightsize.loads.quasi_static import TELESCOPING
 from alightsize.pipeline.landings import LANDING, quasi_static_load
 from alightsize.reports.loads_report import context as loads_context
 from alightsize.reports.loads_report import heatmap, write_workbook as write_loads_workbook
@@ -175,7 +176,11 @@ def _landings(cfg, system: str) -> dict | None:
 
 
 def _loads_context(cfg, system: str) -> dict | None:
-    return loads_context(cfg.loads, system, governing_cases(cfg)) if cfg.loads is not None else None
+    if cfg.loads is None:
+        return None
+    landed = cfg.landings is not None and cfg.loads.telescoping is not None and TELESCOPING in cfg.landings.envelopes
+    return loads_context(cfg.loads, system, governing_cases(cfg),
+                         cfg.landings.quasi_static.telescoping if landed else None)
 
 
 def _reference_label(cfg, key: str) -> str:
