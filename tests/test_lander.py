@@ -185,9 +185,12 @@ def test_cli_design_prints_a_one_screen_summary(tmp_path):
     assert out.returncode == 0, out.stdout + out.stderr          # the shipped design meets its requirements
     head = out.stdout.splitlines()
     assert re.match(r"lunar_lander: PASS: ", head[0])
-    assert any(h.strip().startswith("governing check:") for h in head[1:6])
-    assert any("of the capsule" in h for h in head[1:6])
     summary = json.loads((tmp_path / "o" / "summary.json").read_text())
+    # verdict, landings, then each criterion's nearest landing, the governing check and the weight: one screen
+    criteria = [h.strip() for h in head if h.startswith("    ")]
+    assert len(criteria) == len(summary["landing_margins"]) == 5        # stroke, tumbling, XDD, contact, settling
+    assert any(h.strip().startswith("governing check:") for h in head[1:12])
+    assert any("of the capsule" in h for h in head[1:12])
     assert summary["ok"] == (out.returncode == 0)
     assert all("margin_of_safety" in c for c in summary["audit"]["checks"])
 

@@ -71,8 +71,8 @@ class DesignResult:
         return [(i.name, i.required) for i in self.items if i.required < 1]
 
     def summary_lines(self) -> list[str]:
-        """The one-screen summary: verdict (naming any required factor below 1), each criterion, worst landing,
-        governing member, weight."""
+        """The one-screen summary: verdict (naming any required factor below 1), each criterion with the landing
+        nearest to violating it, governing member, weight."""
         lines = [self.verdict()]
         land = self.config.landings
         if land is not None:
@@ -80,9 +80,9 @@ class DesignResult:
             kinds = Counter(k for r in land.failing for k in dict.fromkeys(violation_kinds(r["criteria_failed"])))
             lines.append(f"landings: {n - len(land.failing)} of {n} meet every criterion" +
                          "".join(f"; {k}: {c}" for k, c in kinds.most_common()))
-            worst = max(land.rows, key=lambda r: max(r[f"peak_xdd{i}_g"] or 0.0 for i in (1, 2, 3)))
-            peak = max(worst[f"peak_xdd{i}_g"] or 0.0 for i in (1, 2, 3))
-            lines.append(f"worst landing: {worst['run_id']} ({worst['outcome']}, peak {peak:.3g} g)")
+            if land.closest:
+                lines.append(CLOSEST_HEAD)
+                lines += ["  " + c.line() for c in land.closest]
         gov = self.governing()
         if gov is not None:
             lines.append(f"governing check: {gov.item.name} {gov.outcome.mode}, f = {gov.outcome.factor:.3g} "
@@ -140,6 +140,9 @@ class DesignResult:
         if kind not in figures:
             raise ValueError(f"plot kind {kind!r}: expected one of {', '.join(figures)}")
         return figures[kind](self)
+
+
+CLOSEST_HEAD = "nearest to failing, per criterion (margin = 1 - used / allowed, below 0 fails):"
 
 
 def below_one_line(items: list[tuple[str, float]]) -> str:
@@ -204,6 +207,7 @@ def summary_json(res: DesignResult) -> dict:
     if res.config.landings is not None:
         from alightsize.pipeline.landings import landings_json
         out["landings"] = landings_json(res.config.landings)
+        out["landing_margins"] = [c.as_json() for c in res.config.landings.closest]
     if res.sizings:
         out["sizing"] = [{"item": s.item, "dimension": s.dimension, "printed_m": s.printed, "sized_m": s.sized,
                           "design_factor_printed": _finite(s.factor_printed), "design_factor_sized": _finite(s.factor_sized),

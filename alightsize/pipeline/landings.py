@@ -20,7 +20,7 @@ import json
 import tempfile
 from dataclasses import dataclass
 from functools import cached_property
-from math import radians
+from math import degrees, radians
 from pathlib import Path
 from typing import Callable
 
@@ -29,6 +29,7 @@ from alightsize.common.errors import InputError
 from alightsize.loads.config import LoadsConfig
 from alightsize.loads.histories import dynamic_envelope
 from alightsize.loads.envelopes import Extreme
+from alightsize.landings.criteria import Closest, LandingLimits, closest
 from alightsize.loads.quasi_static import TELESCOPING, TELESCOPING_FORCES, LoadsResult, pick
 from alightsize.loads.telescoping import sliding_loads
 from alightsize.landings.run_store import RunStore
@@ -49,9 +50,25 @@ class Landings:
     role: str = "criteria"            # "criteria": the design passes only if every landing meets them
 
     @cached_property
+    def scenes(self) -> tuple:
+        """Per run: its scene config (read when a report asks)."""
+        return tuple(read_scene(r.scene, r.overrides) for r in self.study.runs)
+
+    @property
     def conditions(self) -> tuple[dict, ...]:
-        """Per run: scene_config.impact_conditions (read when a report asks)."""
-        return tuple(impact_conditions(read_scene(r.scene, r.overrides)) for r in self.study.runs)
+        """Per run: scene_config.impact_conditions."""
+        return tuple(impact_conditions(s) for s in self.scenes)
+
+    @cached_property
+    def closest(self) -> tuple[Closest, ...]:
+        """Per criterion of the study, the landing nearest to violating it, violated criteria first
+        (landings.criteria.closest); none without criteria."""
+        crit = self.study.criteria
+        if crit is None:
+            return ()
+        limits = [LandingLimits(tuple(tuple(c.curve.bottoming for c in leg.cells) for leg in s.scene.legs),
+                                tuple(map(tuple, s.cell_names)), degrees(s.controls.tip_angle)) for s in self.scenes]
+        return tuple(closest(self.rows, crit, limits))
 
     @property
     def failing(self) -> tuple[dict, ...]:
