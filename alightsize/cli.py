@@ -33,11 +33,13 @@ def _design(args) -> int:
 def _audit(args) -> int:
     from alightsize.common.atomic import write_atomic
     from alightsize.checks.audit import audit_json, audit_table, failure_label, junit_xml
-    from alightsize.pipeline.design import run_design
+    from alightsize.pipeline.design import audit, below_one_line
     from alightsize.pipeline.lander import read_input
-    res = run_design(read_input(args.config))
+    res = audit(read_input(args.config))                # every section as written: sizing is `design`'s
     print(audit_table(res.records))
     print("OK" if res.checks_ok else "FAILED: " + ", ".join(failure_label(r) for r in res.records if not r.ok))
+    if res.below_one:
+        print("note: " + below_one_line(res.below_one))
     if not res.landings_ok:                            # the audit judges design factors; say what else fails
         print(f"note: the design fails beyond its design factors ({res.verdict()}); see alightsize design")
     if args.json:

@@ -2,6 +2,7 @@
 
 import json
 import re
+from math import pi, sqrt
 import subprocess
 import sys
 from pathlib import Path
@@ -89,6 +90,12 @@ def test_audit_fails_when_a_wall_is_thinned(tmp_path):
     (lambda t: t.replace("[design]", "[design\n"), "", "syntax error"),
     (lambda t: t.replace("required_design_factor = 1.2", "required_design_factor = inf"),
      "audit.required_design_factor", "inf"),
+    (lambda t: t.replace("required_design_factor = 1.2", "required_design_factor = 0.5"),
+     "audit.required_design_factor", "0.5"),
+    (lambda t: t.replace('name = "Upper Truss"\n', 'name = "Upper Truss"\nrequired_design_factor = 0.9\n'),
+     'item["Upper Truss"].required_design_factor', "0.9"),
+    (lambda t: t.replace("required_design_factor = 1.2", "required_design_factor = 1.2\nallow_below_one = true"),
+     "audit.allow_below_one", "1.2"),
 ])
 def test_bad_input_exits_2_naming_file_key_expected_found(tmp_path, capsys, edit, key, found):
     """In process (the command line's own entry point is exercised by test_missing_file_exits_2): main
@@ -141,3 +148,66 @@ def test_bench_of_an_unknown_scene_exits_2_listing_the_known_ones(tmp_path, caps
     err = capsys.readouterr().err
     assert "--scene" in err and "flat_drop" in err and "nosuch" in err
     assert not any(tmp_path.iterdir())
+
+
+# A 4130 steel rod in tension, printed too thin and sized by `design` (Fcy 180,000 psi, App. IV): f = Fcy pi d^2 / (4 P).
+ROD = """
+[design]
+configuration = "rod"
+
+[audit]
+required_design_factor = 1.2
+
+[[item]]
+name = "Rod"
+material = "4130-steel"
+section = { shape = "rod", diameter = "0.25 in" }
+size = { dimension = "diameter", min = "0.1 in", max = "1 in" }
+  [[item.check]]
+  kind = "tension"
+  load = "12000 lbf"
+"""
+FCY, P = 180000.0, 12000.0          # psi, lbf
+
+
+def test_audit_judges_the_section_as_written_and_design_sizes_it(tmp_path, capsys):
+    """`audit` never sizes: the printed 0.25 in rod gives f = 180,000 pi 0.25^2 / (4 x 12,000) = 0.736 < 1.2,
+    exit 1. `design` sizes it to d = sqrt(4 (1.2) P / (pi Fcy)) = 0.3192 in and passes (exit 0). Tolerances:
+    the exact factor to float round-off of the unit conversions (1e-12); the sized diameter to the bisection's
+    1e-9."""
+    cfg = tmp_path / "rod.toml"
+    cfg.write_text(ROD)
+    js = tmp_path / "a.json"
+    printed = FCY * pi * 0.25 ** 2 / (4 * P)
+    assert main(["audit", str(cfg), "--json", str(js)]) == 1
+    assert "FAILED: Rod / tension" in capsys.readouterr().out
+    (check,) = json.loads(js.read_text())["checks"]
+    assert check["design_factor"] == pytest.approx(printed, rel=1e-12) and check["ok"] is False
+    assert main(["design", str(cfg), "--out", str(tmp_path / "d")]) == 0
+    doc = json.loads((tmp_path / "d" / "summary.json").read_text())
+    assert doc["ok"] is True and doc["audit"]["checks"][0]["design_factor"] >= 1.2
+    (sized,) = doc["sizing"]
+    assert sized["design_factor_printed"] == pytest.approx(printed, rel=1e-12)
+    assert sized["sized_m"] == pytest.approx(sqrt(4 * 1.2 * P / (pi * FCY)) * 0.0254, rel=1e-8)
+
+
+def test_a_required_factor_below_one_needs_its_override_and_is_reported(tmp_path, capsys):
+    """required_design_factor = 0.5 is refused (exit 2 naming the key) unless allow_below_one = true stands
+    beside it; then the printed rod's f = 0.736 passes 0.5 and the verdict, the audit, summary.json and the
+    report's result line all say that the required factor is below 1."""
+    bad = tmp_path / "half.toml"
+    bad.write_text(ROD.replace("required_design_factor = 1.2", "required_design_factor = 0.5"))
+    assert main(["audit", str(bad)]) == 2
+    assert "audit.required_design_factor" in capsys.readouterr().err
+    ok = tmp_path / "allowed.toml"
+    ok.write_text(ROD.replace("required_design_factor = 1.2", "required_design_factor = 0.5\nallow_below_one = true"))
+    assert main(["audit", str(ok)]) == 0
+    assert "required design factor below 1 (allow_below_one): Rod 0.5" in capsys.readouterr().out
+    assert main(["design", str(ok), "--out", str(tmp_path / "d")]) == 0
+    first = capsys.readouterr().out.splitlines()[0]
+    assert first.startswith("rod: PASS: ") and "below 1 (allow_below_one): Rod 0.5" in first
+    doc = json.loads((tmp_path / "d" / "summary.json").read_text())
+    assert doc["required_below_one"] == [{"item": "Rod", "required_design_factor": 0.5}]
+    assert "below 1 (allow_below_one): Rod 0.5" in doc["verdict"]
+    html = (tmp_path / "d" / "report.html").read_text()
+    assert "below 1 (allow_below_one): Rod 0.5" in html.split("Result:")[1].split("</p>")[0]

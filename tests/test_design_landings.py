@@ -139,3 +139,52 @@ def test_a_landing_says_whether_it_runs_downhill_or_uphill():
         assert c["slope_deg"] == pytest.approx(abs(slope), abs=1e-9)
         want = {-20.0: "uphill on a 20° slope", 0.0: "horizontal on level ground", 20.0: "downhill on a 20° slope"}
         assert want[slope] in row["conditions"], row
+
+
+def test_the_landing_nearest_each_criterion_failing_ones_first():
+    """Margins of synthetic landing rows in closed form (1 - used / allowed; tolerance: float round-off):
+    a stable landing with the highest peak (19 of 20 g, margin 0.05) is named only for the acceleration
+    criterion; the tumbling landing (nutation 66 of 60 deg, -0.1) and the deeper of two bottomed ones
+    (0.42 of 0.4 m, -0.05) come first."""
+    import json as _json
+
+    from alightsize.landings.criteria import Criteria, LandingLimits, closest
+
+    def row(run_id, outcome, xdd, strokes, nutation):
+        return {"run_id": run_id, "outcome": outcome, "peak_nutation_deg": nutation,
+                **{f"peak_xdd{i + 1}_g": x for i, x in enumerate(xdd)},
+                **{f"peak_onset_xdd{i + 1}_g_s": 0.0 for i in range(3)},
+                "cells_json": _json.dumps([{"leg": 1, "cells": [{"max_deflection_m": d} for d in strokes]}])}
+    rows = [row("high-g", "stable", (2.0, 1.0, 19.0), (0.2, 0.1), 6.0),
+            row("bottomed", "bottomed", (1.0, 1.0, 8.0), (0.42, 0.1), 10.0),
+            row("tipped", "tipped", (3.0, 1.0, 4.0), (0.1, 0.27), 66.0),
+            row("bottomed-2", "bottomed", (1.0, 1.0, 8.0), (0.41, 0.0), 10.0)]
+    limits = [LandingLimits(((0.4, 0.3),), (("axial", "rot1"),), 60.0)] * len(rows)
+    got = closest(rows, Criteria((10.0, 10.0, 20.0), None), limits)
+    assert [(c.margin.criterion, c.run_id, c.failing) for c in got] == [
+        ("tumbling", "tipped", 1), ("bottoming", "bottomed", 2), ("acceleration", "high-g", 0),
+        ("body_contact", None, 0), ("settling", None, 0)]
+    for c, want in zip(got, (1 - 66 / 60, 1 - 0.42 / 0.4, 1 - 19 / 20)):
+        assert c.margin.margin == pytest.approx(want, rel=1e-12)
+    assert got[0].line().startswith("no tumbling: tipped, margin -0.100 (nutation 66 deg of 60 deg); 1 of 4 fail")
+
+
+def test_the_first_screen_names_the_landing_nearest_each_criterion(design, rendered):
+    """The example's summary.json and first screen: for the peak and onset criteria the landing of the
+    smallest margin 1 - max_i(value_i / limit_i) (recomputed from the stored peaks; float round-off), every
+    criterion some landing violates before those none does, and the same lines on stdout and atop the page."""
+    import html as _html
+    _, stdout, page, summary = rendered
+    rows = design.landings.rows
+    margins = {m["criterion"]: m for m in summary["landing_margins"]}
+    for name, col, caps in (("acceleration", "peak_xdd{}_g", SEC_II_G), ("onset", "peak_onset_xdd{}_g_s", SEC_II_ONSET)):
+        each = [1 - max(r[col.format(i)] / caps[i - 1] for i in (1, 2, 3)) for r in rows]
+        k = min(range(len(rows)), key=each.__getitem__)
+        assert margins[name]["run_id"] == rows[k]["run_id"]
+        assert margins[name]["margin"] == pytest.approx(each[k], rel=1e-12)
+        assert margins[name]["failing"] == sum(m < 0 for m in each)
+    failing = [m["failing"] > 0 for m in summary["landing_margins"]]
+    assert failing == sorted(failing, reverse=True) and failing[0]
+    top = page.split("<h2")[0]
+    for c in design.landings.closest:
+        assert c.line() in stdout and _html.escape(c.line(), quote=False) in top

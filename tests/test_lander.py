@@ -156,6 +156,28 @@ def test_bad_lander_file_exits_2_naming_the_key(tmp_path, capsys, subs, key):
     assert "Traceback" not in err and key in err
 
 
+@pytest.mark.parametrize("subs, key", [
+    ({"required_design_factor = 1.25": "required_design_factor = 0.5"}, "requirements.required_design_factor"),
+    ({'[members.upper_tube]\n': '[members.upper_tube]\nrequired_design_factor = 0.8\n'},
+     "members.upper_tube.required_design_factor"),
+])
+def test_a_required_factor_below_one_is_refused_without_its_override(tmp_path, subs, key):
+    """Below 1 a member passes above its allowable: refused naming the key, read with allow_below_one = true
+    beside it (the factor then reaches the items as written: 0.5 for every item, or 0.8 for the one member;
+    prepared without landings, which play no part here)."""
+    from dataclasses import replace
+    with pytest.raises(InputError) as err:
+        alightsize.read_lander(variant(tmp_path, subs))
+    assert key in str(err.value) and "allow_below_one" in str(err.value)
+    ((old, new),) = subs.items()
+    spec = alightsize.read_lander(variant(tmp_path, {old: new + "\nallow_below_one = true\n"}, "ok.toml")).spec
+    required = {i.name: i.required for i in prepare(replace(spec, landings=None)).items}
+    if key.startswith("requirements"):
+        assert set(required.values()) == {0.5}
+    else:
+        assert required.pop("upper_tube") == 0.8 and set(required.values()) == {1.25}
+
+
 def test_cli_design_prints_a_one_screen_summary(tmp_path):
     p = variant(tmp_path, FEW)
     out = subprocess.run([sys.executable, "-m", "alightsize", "design", str(p), "--out", str(tmp_path / "o")],
@@ -163,9 +185,12 @@ def test_cli_design_prints_a_one_screen_summary(tmp_path):
     assert out.returncode == 0, out.stdout + out.stderr          # the shipped design meets its requirements
     head = out.stdout.splitlines()
     assert re.match(r"lunar_lander: PASS: ", head[0])
-    assert any(h.strip().startswith("governing check:") for h in head[1:6])
-    assert any("of the capsule" in h for h in head[1:6])
     summary = json.loads((tmp_path / "o" / "summary.json").read_text())
+    # verdict, landings, then each criterion's nearest landing, the governing check and the weight: one screen
+    criteria = [h.strip() for h in head if h.startswith("    ")]
+    assert len(criteria) == len(summary["landing_margins"]) == 5        # stroke, tumbling, XDD, contact, settling
+    assert any(h.strip().startswith("governing check:") for h in head[1:12])
+    assert any("of the capsule" in h for h in head[1:12])
     assert summary["ok"] == (out.returncode == 0)
     assert all("margin_of_safety" in c for c in summary["audit"]["checks"])
 

@@ -54,3 +54,34 @@ def test_small_angle_pad_deflection_differs_by_the_printed_1_2_percent_at_15_deg
     exact, small = pad_deflection(15 * IN, a, 0.0, 0.0), pad_deflection(15 * IN, a, 0.0, 0.0, small_angle=True)
     assert round(100 * (small - exact) / exact, 1) == 1.2        # Sec. V.E.2: "1.2 percent ... at 15 degrees"
     assert pad_deflection(15 * IN, a, 0.0, np.pi) == 0.0         # the pad opposite is never pulled
+
+
+def test_a_landing_side_load_carries_its_own_bearing_reactions():
+    """When a landing's P1 replaces the free body's, the free-body table's w1, w2 and P4 follow from the P1
+    printed beside them by App. III's relations (w1 = P1 / chi, w2 = 6 P1 (rho - a) / chi^2, P4 = mu (w1 chi +
+    0.5 w2 chi)), and the App. III column keeps the quasi-static set, which satisfies them too. A synthetic
+    landing row (P1 twice the free body's, AF1 below its 3,750 lb) stands for a landing. Tolerance 1e-12: the
+    same arithmetic in another order."""
+    import json
+
+    from alightsize.common.units import parse
+    from alightsize.loads.quasi_static import run_loads
+    from alightsize.pipeline.landings import merge
+    from alightsize.reports.loads_report import telescoping_rows
+    qs = run_loads(read_loads(EXAMPLES / "loads" / "telescoping.toml"))
+    at = {"t_s": 0.1, "leg": 1, "alpha_deg": 5.0, "beta_deg": 45.0, "psi_deg": 0.0}
+    loads = [{"member": "P1", "tension_N": 2 * qs.telescoping["P1"], "tension_at": at, "compression_N": None,
+              "compression_at": None},
+             {"member": "AF1", "tension_N": 0.5 * qs.telescoping["AF1"], "tension_at": at, "compression_N": None,
+              "compression_at": None}]
+    res = merge(qs, ({"run_id": "L1", "member_loads_json": json.dumps(loads)},), ("telescoping",))
+    rows = {r["name"]: r for r in telescoping_rows(res, "SI", qs.telescoping)}
+    dims = {"w1": "spring_rate", "w2": "spring_rate"}
+    t = {k: parse(f"{r['number']!r} {r['unit']}", dims.get(k, "force")) for k, r in rows.items()}  # as printed, to SI
+    chi, rho, a, mu = LEG.bearing_length, LEG.length, LEG.pad_lever, LEG.friction
+    assert t["P1"] == pytest.approx(2 * qs.telescoping["P1"], rel=1e-12) and rows["P1"]["source"] == "landing L1"
+    for fb in (t, qs.telescoping):                                    # the design set, the App. III set
+        assert fb["w1"] == pytest.approx(fb["P1"] / chi, rel=1e-12)
+        assert fb["w2"] == pytest.approx(6 * fb["P1"] * (rho - a) / chi ** 2, rel=1e-12)
+        assert fb["P4"] == pytest.approx(mu * (fb["w1"] * chi + 0.5 * fb["w2"] * chi), rel=1e-12)
+    assert t["AF1"] == pytest.approx(LEG.axial_crush, rel=1e-12) and rows["AF1"]["source"] == "App. III free body"

@@ -1,10 +1,13 @@
 """Study criteria for one landing (AFFDL-TR-66-33 Sec. II): acceleration limits and onset rates per body
 axis, no bottoming of any cell, no tumbling, no body contact. Walking counts as a successful alightment
-(Sec. II.B: "these runs were considered successful")."""
+(Sec. II.B: "these runs were considered successful"). Each landing's margin to each criterion (`margins`)
+and, over a set of landings, the one nearest to violating each (`closest`)."""
 
 from __future__ import annotations
 
+import json
 from dataclasses import dataclass
+from math import inf
 
 from alightsize.common.config import Node
 
@@ -87,3 +90,107 @@ def violation_kinds(failed: str | None) -> list[str]:
             head, sep, limit = f.partition(" > ")
             out.append(" ".join(head.split(" ")[:-2]) + sep + limit if sep else f)
     return out
+
+
+@dataclass(frozen=True)
+class Margin:
+    """How near one landing came to violating one criterion: `margin` = 1 - used / allowed (its largest
+    ratio over the axes or cells the criterion covers; 0 at the limit, below 0 past it), None for a
+    criterion judged pass/fail only (the row records no measure of it); `failed` as the study's criteria
+    judge the landing (`Criteria.failures`); `detail` the governing figure in words."""
+
+    criterion: str          # "bottoming", "tumbling", "acceleration", "onset", "body_contact", "settling"
+    requirement: str        # "no cell bottoms", "XDD <= 10 / 10 / 20 g", ...
+    margin: float | None
+    failed: bool
+    detail: str
+
+
+@dataclass(frozen=True)
+class LandingLimits:
+    """What a landing's measures are compared with, from its scene: each leg's cells' strokes to bottoming
+    (m, in the row's cell order) and the tip angle the nutation is tested against (deg)."""
+
+    strokes: tuple[tuple[float, ...], ...]
+    cell_names: tuple[tuple[str, ...], ...]
+    tip_angle_deg: float
+
+
+def _ratio_margin(values, limits, names, unit: str) -> tuple[float, str]:
+    """(1 - largest value / limit, "XDD(3) 12.1 g of 10 g") over paired values and limits."""
+    k = max(range(len(values)), key=lambda i: values[i] / limits[i])
+    return 1.0 - values[k] / limits[k], f"{names[k]} {values[k]:.4g} {unit} of {limits[k]:g} {unit}"
+
+
+def margins(row: dict, criteria: Criteria, limits: LandingLimits) -> list[Margin]:
+    """Every criterion the study applies, for one stored landing row (alightsize.landings.sweep columns):
+    cell stroke / stroke to bottoming (per cell, from cells_json), peak nutation / tip angle, peak XDD / limit
+    and onset / limit (per body axis); body contact and settling (no numerical failure, at rest within t_final)
+    pass/fail only."""
+    oc = row["outcome"]
+    out = []
+    if criteria.no_bottoming:
+        used = [(c["max_deflection_m"], limits.strokes[leg["leg"] - 1][j],
+                 f"leg {leg['leg']} {limits.cell_names[leg['leg'] - 1][j]}")
+                for leg in json.loads(row.get("cells_json") or "[]") for j, c in enumerate(leg["cells"])]
+        m, detail = _ratio_margin([u[0] for u in used], [u[1] for u in used], [u[2] for u in used], "m")
+        out.append(Margin("bottoming", "no cell bottoms", m, oc == "bottomed", f"{detail} stroke"))
+    if criteria.no_tumbling:
+        nut, tip = row["peak_nutation_deg"], limits.tip_angle_deg
+        out.append(Margin("tumbling", "no tumbling", 1.0 - nut / tip, oc == "tipped",
+                          f"nutation {nut:.4g} deg of {tip:.4g} deg"))
+    for name, caps, col, unit, word in (("acceleration", criteria.max_xdd_g, "peak_xdd{}_g", "g", ""),
+                                        ("onset", criteria.max_onset_g_s, "peak_onset_xdd{}_g_s", "g/s", " onset")):
+        if caps:
+            values = [row[col.format(i)] for i in (1, 2, 3)]
+            m, detail = _ratio_margin(values, caps, [f"XDD({i}){word}" for i in (1, 2, 3)], unit)
+            out.append(Margin(name, f"XDD{word} <= {' / '.join(f'{c:g}' for c in caps)} {unit}", m,
+                              any(v > c for v, c in zip(values, caps)), detail))
+    if criteria.no_body_contact:
+        out.append(Margin("body_contact", "no body contact", None, oc == "body_contact", f"outcome {oc}"))
+    out.append(Margin("settling", "at rest within t_final, no numerical failure", None,
+                      oc in ("failed", "time_out"), f"outcome {oc}"))
+    return out
+
+
+@dataclass(frozen=True)
+class Closest:
+    """Per criterion, the landing nearest to violating it (a violating one first): its run, `Margin` and how
+    many of the `landings` violate the criterion."""
+
+    run_id: str | None      # None for a pass/fail-only criterion that every landing meets (none is nearer)
+    margin: Margin
+    failing: int
+    landings: int
+
+    def as_json(self) -> dict:
+        m = self.margin
+        return {"criterion": m.criterion, "requirement": m.requirement, "run_id": self.run_id, "margin": m.margin,
+                "failed": m.failed, "detail": m.detail, "failing": self.failing, "landings": self.landings}
+
+    def line(self) -> str:
+        """"no cell bottoms: mc-21, margin -0.021 (leg 2 rot1 0.3063 m of 0.3 m stroke); 2 of 116 fail"."""
+        m = self.margin
+        if self.run_id is None:
+            return f"{m.requirement}: met by all {self.landings} (pass/fail only)"
+        head = f"{m.requirement}: {self.run_id}, " + (f"margin {m.margin:+.3f} ({m.detail})" if m.margin is not None
+                                                        else m.detail)
+        return head + (f"; {self.failing} of {self.landings} fail" if self.failing else "")
+
+
+def closest(rows, criteria: Criteria, limits) -> list[Closest]:
+    """For each criterion, the landing row nearest to violating it: among the rows that violate it, else
+    among all, the smallest margin (rows with `limits` alongside, one `LandingLimits` per row). Criteria
+    that a landing violates come first, then by margin, smallest first (pass/fail-only criteria last of
+    their group)."""
+    table = [(r["run_id"], margins(r, criteria, lim)) for r, lim in zip(rows, limits)]
+    if not table:
+        return []
+    out = []
+    for k in range(len(table[0][1])):
+        col = [(run_id, ms[k]) for run_id, ms in table]
+        run_id, m = min(col, key=lambda c: (not c[1].failed, inf if c[1].margin is None else c[1].margin))
+        unranked = m.margin is None and not m.failed
+        out.append(Closest(None if unranked else run_id, m, sum(c[1].failed for c in col), len(col)))
+    return sorted(out, key=lambda c: (not c.margin.failed, c.margin.margin is None,
+                                      0.0 if c.margin.margin is None else c.margin.margin))

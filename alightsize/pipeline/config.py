@@ -12,7 +12,7 @@ from alightsize.checks.rules import DEFAULT_RULES, RULES
 from alightsize.loads.config import LoadsConfig, read_loads
 from alightsize.loads.quasi_static import LoadReference, LoadsResult, attach, run_loads, validate_references
 from alightsize.model.materials import Material, library, material_paths
-from alightsize.pipeline.items import Item, read_item
+from alightsize.pipeline.items import Item, read_item, read_required
 from alightsize.pipeline.landings import Landings, LandingSpec, landed, read_landing_spec, run_landings
 
 UNIT_SYSTEMS = ("US", "SI")
@@ -88,7 +88,7 @@ def read_design(path: str | Path) -> DesignSpec:
     if rep:
         rep.finish()
     aud = root.table("audit", optional=True)
-    required = aud.number("required_design_factor", 1.2) if aud else 1.2
+    required = read_required(aud, 1.2) if aud else 1.2
     decimals = aud.integer("decimals", None, minimum=0, maximum=12) if aud else None
     if aud:
         aud.finish()

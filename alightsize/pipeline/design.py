@@ -65,8 +65,14 @@ class DesignResult:
         """The check with the smallest margin of safety."""
         return min(self.records, key=lambda r: r.margin, default=None)
 
+    @property
+    def below_one(self) -> list[tuple[str, float]]:
+        """(item, required factor) of every item required less than 1 (allowed only by allow_below_one)."""
+        return [(i.name, i.required) for i in self.items if i.required < 1]
+
     def summary_lines(self) -> list[str]:
-        """The one-screen summary: verdict, each criterion, worst landing, governing member, weight."""
+        """The one-screen summary: verdict (naming any required factor below 1), each criterion with the landing
+        nearest to violating it, governing member, weight."""
         lines = [self.verdict()]
         land = self.config.landings
         if land is not None:
@@ -74,9 +80,9 @@ class DesignResult:
             kinds = Counter(k for r in land.failing for k in dict.fromkeys(violation_kinds(r["criteria_failed"])))
             lines.append(f"landings: {n - len(land.failing)} of {n} meet every criterion" +
                          "".join(f"; {k}: {c}" for k, c in kinds.most_common()))
-            worst = max(land.rows, key=lambda r: max(r[f"peak_xdd{i}_g"] or 0.0 for i in (1, 2, 3)))
-            peak = max(worst[f"peak_xdd{i}_g"] or 0.0 for i in (1, 2, 3))
-            lines.append(f"worst landing: {worst['run_id']} ({worst['outcome']}, peak {peak:.3g} g)")
+            if land.closest:
+                lines.append(CLOSEST_HEAD)
+                lines += ["  " + c.line() for c in land.closest]
         gov = self.governing()
         if gov is not None:
             lines.append(f"governing check: {gov.item.name} {gov.outcome.mode}, f = {gov.outcome.factor:.3g} "
@@ -92,6 +98,8 @@ class DesignResult:
         failed = [r for r in self.records if not r.ok]
         parts = [f"{len(failed)} of {len(self.records)} checks below the required design factor" if failed
                  else f"all {len(self.records)} checks meet their required design factor"]
+        if self.below_one:
+            parts.append(below_one_line(self.below_one))
         if any(not s.feasible for s in self.sizings):
             parts.append("sizing cannot meet the required factor for " +
                          ", ".join(s.item for s in self.sizings if not s.feasible))
@@ -134,6 +142,14 @@ class DesignResult:
         return figures[kind](self)
 
 
+CLOSEST_HEAD = "nearest to failing, per criterion (margin = 1 - used / allowed, below 0 fails):"
+
+
+def below_one_line(items: list[tuple[str, float]]) -> str:
+    """"required design factor below 1 (allow_below_one): lower_tube 0.5, ..."."""
+    return "required design factor below 1 (allow_below_one): " + ", ".join(f"{n} {f:g}" for n, f in items)
+
+
 def criteria_counts(rows) -> str:
     """"a cell bottomed 8, XDD(1) > 1000 g/s 24": how many landings violate each kind of criterion."""
     kinds = Counter(k for r in rows for k in dict.fromkeys(violation_kinds(r["criteria_failed"])))
@@ -141,14 +157,15 @@ def criteria_counts(rows) -> str:
 
 
 def run_design(cfg: DesignConfig | DesignSpec, landings_dir=None, progress: bool = False,
-               rows: tuple[dict, ...] | None = None) -> DesignResult:
-    """Size, check and weigh a design; a design as read (`DesignSpec`) is prepared first (envelopes,
-    landings into `landings_dir` or from their stored `rows`, loads resolved)."""
+               rows: tuple[dict, ...] | None = None, *, size: bool = True) -> DesignResult:
+    """Size (`size=True`, what `alightsize design` does), check and weigh a design; with `size=False` every
+    item is judged at its section as written (`audit`). A design as read (`DesignSpec`) is prepared first
+    (envelopes, landings into `landings_dir` or from their stored `rows`, loads resolved)."""
     if isinstance(cfg, DesignSpec):
         cfg = prepare(cfg, landings_dir, progress, rows)
     sizings, items = [], []
     for item in cfg.items:
-        if item.size is not None:
+        if size and item.size is not None:
             s = size_item(item)
             sizings.append(s)
             item = item.with_section(item.section.with_dim(s.dimension, s.sized))
@@ -163,6 +180,12 @@ def run_design(cfg: DesignConfig | DesignSpec, landings_dir=None, progress: bool
     return DesignResult(cfg, items, records, sizings, weights)
 
 
+def audit(cfg: DesignConfig | DesignSpec, landings_dir=None, rows: tuple[dict, ...] | None = None) -> DesignResult:
+    """The design-factor audit (`alightsize audit`): every item's checks at its section as written, never sized
+    (a `size` table is what `alightsize design` does with the item)."""
+    return run_design(cfg, landings_dir, rows=rows, size=False)
+
+
 def weights_json(res: DesignResult) -> dict:
     cfg = res.config
     total = res.per_leg * cfg.legs
@@ -175,6 +198,7 @@ def weights_json(res: DesignResult) -> dict:
 def summary_json(res: DesignResult) -> dict:
     out = {"schema": SCHEMA, "ok": res.ok, "configuration": res.config.configuration, "verdict": res.verdict(),
            "checks_ok": res.checks_ok, "landings_ok": res.landings_ok,
+           "required_below_one": [{"item": n, "required_design_factor": f} for n, f in res.below_one],
            "audit": {k: v for k, v in audit_json(res.config, res.records).items() if k != "schema"},
            "weights": weights_json(res)}
     if res.config.loads is not None:
@@ -183,6 +207,7 @@ def summary_json(res: DesignResult) -> dict:
     if res.config.landings is not None:
         from alightsize.pipeline.landings import landings_json
         out["landings"] = landings_json(res.config.landings)
+        out["landing_margins"] = [c.as_json() for c in res.config.landings.closest]
     if res.sizings:
         out["sizing"] = [{"item": s.item, "dimension": s.dimension, "printed_m": s.printed, "sized_m": s.sized,
                           "design_factor_printed": _finite(s.factor_printed), "design_factor_sized": _finite(s.factor_sized),

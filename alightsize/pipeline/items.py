@@ -87,6 +87,22 @@ def _read_size(node: Node, section: Section | None, checks: tuple[Check, ...]) -
     return SizeSpec(dim, low, high, gauges)
 
 
+def read_required(node: Node, default: float) -> float:
+    """A table's `required_design_factor` (`default` when it gives none): finite, positive and at least 1, or
+    below 1 only with `allow_below_one = true` beside it (below 1 a member passes at stresses above its
+    allowable, so the override is explicit and the report names it)."""
+    required = node.number("required_design_factor", default)
+    allow = node.boolean("allow_below_one", False)
+    written = node.has("required_design_factor")
+    if written and required < 1 and not allow:
+        raise node.error("required_design_factor", "a required design factor of at least 1 (below 1 a member passes "
+                         "above its allowable; to mean it, write allow_below_one = true beside it)", f"{required:g}")
+    if allow and not (written and required < 1):
+        raise node.error("allow_below_one", "allow_below_one = true only beside a required_design_factor below 1",
+                         f"required_design_factor {required:g}" if written else "no required_design_factor here")
+    return required
+
+
 def read_item(node: Node, materials: dict[str, Material], required_default: float, rules: Rules) -> Item:
     name = node.string("name")
     count = node.integer("count", 1)
@@ -101,7 +117,7 @@ def read_item(node: Node, materials: dict[str, Material], required_default: floa
         except Unloaded:                       # a derived check of a member never loaded in that sense
             pass
     checks = tuple(checks)
-    required = node.number("required_design_factor", required_default)
+    required = read_required(node, required_default)
     w_node = node.table("weight", optional=True)
     weight = read_weight(w_node, materials) if w_node else None
     s_node = node.table("size", optional=True)

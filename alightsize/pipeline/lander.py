@@ -7,7 +7,7 @@ members' checks, the landing cases of the requirements). Reading it only reads a
 [structure]     telescoping: bearing_length, friction; articulated: truss, psi_final, grid, configuration, combined
 [members.NAME]  material, section, role, size, weight, ... (alightsize.pipeline.members)
 [[item]]        App. IV items with their checks written out (overrides; the 1966 examples)
-[requirements]  required_design_factor, decimals, weight_goal, criteria, envelope, monte_carlo
+[requirements]  required_design_factor (allow_below_one), decimals, weight_goal, criteria, envelope, monte_carlo
 [report]        units = "US" | "SI"
 ```
 """
@@ -37,6 +37,7 @@ from alightsize.model.scene_config import LANDER_ONLY, SceneConfig, read_scene
 from alightsize.pipeline.config import UNIT_SYSTEMS, DesignSpec, read_design, read_items
 from alightsize.pipeline.landings import LandingSpec
 from alightsize.checks.rules import DEFAULT_RULES, RULES
+from alightsize.pipeline.items import read_required
 from alightsize.pipeline.members import member_item
 
 SCENE_TABLES = ("capsule", "cells", "legs", "terrain", "initial", "controls", "output")
@@ -147,8 +148,9 @@ def _envelope(node: Node) -> Envelope:
 
 
 def _requirements(node: Node) -> Requirements:
-    node.allow(("required_design_factor", "decimals", "weight_goal", "criteria", "envelope", "monte_carlo", "note"))
-    required = node.number("required_design_factor", 1.25)
+    node.allow(("required_design_factor", "allow_below_one", "decimals", "weight_goal", "criteria", "envelope",
+                "monte_carlo", "note"))
+    required = read_required(node, 1.25)
     decimals = node.integer("decimals", None, minimum=0, maximum=12)
     goal = node.number("weight_goal", None)
     if goal is not None and not 0 < goal < 1:

@@ -20,7 +20,7 @@ import json
 import tempfile
 from dataclasses import dataclass
 from functools import cached_property
-from math import radians
+from math import degrees, radians
 from pathlib import Path
 from typing import Callable
 
@@ -29,7 +29,9 @@ from alightsize.common.errors import InputError
 from alightsize.loads.config import LoadsConfig
 from alightsize.loads.histories import dynamic_envelope
 from alightsize.loads.envelopes import Extreme
-from alightsize.loads.quasi_static import TELESCOPING, LoadsResult, pick
+from alightsize.landings.criteria import Closest, LandingLimits, closest
+from alightsize.loads.quasi_static import TELESCOPING, TELESCOPING_FORCES, LoadsResult, pick
+from alightsize.loads.telescoping import sliding_loads
 from alightsize.landings.run_store import RunStore
 from alightsize.model.scene_config import impact_conditions, read_scene
 from alightsize.landings.study import Study, read_study
@@ -48,9 +50,25 @@ class Landings:
     role: str = "criteria"            # "criteria": the design passes only if every landing meets them
 
     @cached_property
+    def scenes(self) -> tuple:
+        """Per run: its scene config (read when a report asks)."""
+        return tuple(read_scene(r.scene, r.overrides) for r in self.study.runs)
+
+    @property
     def conditions(self) -> tuple[dict, ...]:
-        """Per run: scene_config.impact_conditions (read when a report asks)."""
-        return tuple(impact_conditions(read_scene(r.scene, r.overrides)) for r in self.study.runs)
+        """Per run: scene_config.impact_conditions."""
+        return tuple(impact_conditions(s) for s in self.scenes)
+
+    @cached_property
+    def closest(self) -> tuple[Closest, ...]:
+        """Per criterion of the study, the landing nearest to violating it, violated criteria first
+        (landings.criteria.closest); none without criteria."""
+        crit = self.study.criteria
+        if crit is None:
+            return ()
+        limits = [LandingLimits(tuple(tuple(c.curve.bottoming for c in leg.cells) for leg in s.scene.legs),
+                                tuple(map(tuple, s.cell_names)), degrees(s.controls.tip_angle)) for s in self.scenes]
+        return tuple(closest(self.rows, crit, limits))
 
     @property
     def failing(self) -> tuple[dict, ...]:
@@ -86,8 +104,12 @@ def _landing_extremes(rows: tuple[dict, ...]):
 
 
 def merge(loads: LoadsResult, rows: tuple[dict, ...], names: tuple[str, ...]) -> LoadsResult:
-    """The envelopes `names` extended by every landing's member extremes (others unchanged); "telescoping"
-    extends the App. III free-body forces, each landing force larger than the free body's replacing it."""
+    """The envelopes `names` extended by every landing's member extremes (others unchanged). "telescoping"
+    extends the App. III free body: AF1, P1, P2 and P3 each the larger of the free body's and every landing's;
+    the bearing reactions w1, w2 then follow from that P1 by App. III's equilibrium of the lower tube
+    (`sliding_loads`: w1 = P1 / chi, w2 = 6 P1 (rho - a) / chi^2, so the table never prints w1, w2 of another
+    P1), and P4 = mu (w1 + w2 / 2) chi from them (a landing's own P4, at its shorter length, is never larger;
+    the larger is kept)."""
     env = dict(loads.envelopes)
     found = list(_landing_extremes(rows))
     for name in (n for n in names if n != TELESCOPING):
@@ -103,8 +125,13 @@ def merge(loads: LoadsResult, rows: tuple[dict, ...], names: tuple[str, ...]) ->
     if TELESCOPING in names:
         tele, since = dict(loads.telescoping), dict(loads.telescoping_from or {})
         for member, lt, _ in found:
-            if member in tele and lt is not None and abs(lt.value) > abs(tele[member]):
+            if member in TELESCOPING_FORCES and lt is not None and abs(lt.value) > abs(tele[member]):
                 tele[member], since[member] = abs(lt.value), lt
+        slide = sliding_loads(loads.config.telescoping, tele["P1"])
+        tele["w1"], tele["w2"] = slide["w1"], slide["w2"]
+        if slide["P4"] >= tele["P4"]:
+            tele["P4"] = slide["P4"]
+            since.pop("P4", None)
         out = dataclasses.replace(out, telescoping=tele, telescoping_from=since)
     return out
 

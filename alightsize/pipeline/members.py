@@ -26,7 +26,8 @@ from alightsize_sim.articulated_statics import MEMBERS
 TELESCOPING_MEMBERS = ("lower_tube", "upper_tube", "axial_cap", "pad_plate", "swivel_pin")
 ARTICULATED_ROLES = ("truss", "rod", "pin")
 # what a member table may say besides its derived checks (passed on to the item)
-ITEM_KEYS = ("material", "section", "length", "weight", "size", "count", "note", "required_design_factor")
+ITEM_KEYS = ("material", "section", "length", "weight", "size", "count", "note", "required_design_factor",
+             "allow_below_one")
 
 
 def _si(x: float, unit: str) -> str:

@@ -16,7 +16,8 @@ from alightsize import __version__
 from alightsize.checks.audit import failure_label
 from alightsize.common.trace import Step
 from alightsize.common.units import fmt, to_display, unit_label
-from alightsize.pipeline.design import DesignResult, criteria_counts, governing_cases, summary_json
+from alightsize.pipeline.design import CLOSEST_HEAD, DesignResult, criteria_counts, governing_cases, summary_json
+from alightsize.loads.quasi_static import TELESCOPING
 from alightsize.pipeline.landings import LANDING, quasi_static_load
 from alightsize.reports.loads_report import context as loads_context
 from alightsize.reports.loads_report import heatmap, write_workbook as write_loads_workbook
@@ -94,6 +95,9 @@ def context(res) -> dict:
                if s.weight_printed and s.weight_sized else ""} for s in res.sizings]
     return {"loads": _loads_context(cfg, system), "references": _references(cfg, system),
             "verdict": res.verdict(), "checks_ok": res.checks_ok, "landings": _landings(cfg, system),
+            "closest_head": CLOSEST_HEAD, "closest": [{"line": c.line(), "failed": c.margin.failed,
+                                                      "anchor": _anchor(c.run_id) if c.run_id else None}
+                                                     for c in (cfg.landings.closest if cfg.landings else ())],
             "title": cfg.title, "configuration": cfg.configuration, "source": cfg.path.name, "units": system,
             "version": __version__, "ok": res.ok, "sheets": sheets, "weights": weights, "sizing": sizing,
             "per_leg": fmt(res.per_leg, "mass", system), "legs": cfg.legs, "total": fmt(total, "mass", system),
@@ -134,6 +138,10 @@ def _parameter(value) -> str:
     return str(value)
 
 
+def _anchor(run_id: str) -> str:
+    return "landing-" + re.sub(r"[^A-Za-z0-9_-]", "_", run_id)
+
+
 def landing_rows(cfg, system: str) -> dict[str, dict]:
     """run id -> what the report shows of a landing case: parameters as written, conditions, outcome, peaks
     (g of standard gravity, as the criteria), onset rates and the criteria it violates."""
@@ -142,7 +150,7 @@ def landing_rows(cfg, system: str) -> dict[str, dict]:
     for r, c in zip(land.rows, land.conditions):
         params = {k: v for k, v in json.loads(r["params_json"]).items() if k != "scene"}
         out[r["run_id"]] = {
-            "id": r["run_id"], "scene": r["scene"], "anchor": "landing-" + re.sub(r"[^A-Za-z0-9_-]", "_", r["run_id"]),
+            "id": r["run_id"], "scene": r["scene"], "anchor": _anchor(r["run_id"]),
             "parameters": ", ".join(f"{k.split('.')[-1].replace('_', ' ')} {_parameter(v)}" for k, v in params.items()),
             "conditions": _conditions(c, system), "outcome": r["outcome"],
             "outcome_class": r["outcome_class"].replace("_", " "),
@@ -175,7 +183,11 @@ def _landings(cfg, system: str) -> dict | None:
 
 
 def _loads_context(cfg, system: str) -> dict | None:
-    return loads_context(cfg.loads, system, governing_cases(cfg)) if cfg.loads is not None else None
+    if cfg.loads is None:
+        return None
+    landed = cfg.landings is not None and cfg.loads.telescoping is not None and TELESCOPING in cfg.landings.envelopes
+    return loads_context(cfg.loads, system, governing_cases(cfg),
+                         cfg.landings.quasi_static.telescoping if landed else None)
 
 
 def _reference_label(cfg, key: str) -> str:

@@ -54,18 +54,35 @@ def tables(res: LoadsResult, system: str) -> list[dict]:
     return out
 
 
-def telescoping_rows(res: LoadsResult, system: str) -> list[dict]:
+TELESCOPING_ROWS = {"AF1": "force", "P1": "force", "P2": "force", "w2": "spring_rate", "w1": "spring_rate",
+                   "P4": "force", "P3": "force"}         # w: force per length (spring_rate units)
+FROM_P1 = {"w1": "w1 = P1 / chi", "w2": "w2 = 6 P1 (rho - a) / chi^2", "P4": "P4 = mu (w1 + w2 / 2) chi"}
+
+
+def telescoping_rows(res: LoadsResult, system: str, quasi_static: dict[str, float] | None = None) -> list[dict]:
+    """The free-body table: each load as the design uses it, where it comes from (the App. III free body, a
+    landing, or App. III's relations on the P1 beside it) and, with landings (`quasi_static`: the free body
+    before they joined), the App. III value."""
     if res.telescoping is None:
         return []
-    dims = {"P1": "force", "P2": "force", "w2": "spring_rate", "w1": "spring_rate", "P4": "force", "P3": "force"}
-    return [{"name": k, "value": fmt(res.telescoping[k], d, system), "number": to_display(res.telescoping[k], d, system),
-             "unit": unit_label(d, system)} for k, d in dims.items()]     # w: force per length (spring_rate units)
+    since = res.telescoping_from or {}
+    out = []
+    for k, d in TELESCOPING_ROWS.items():
+        source = (since[k].configuration if k in since else FROM_P1[k] + " (App. III)" if k in FROM_P1
+                  else "App. III free body")
+        out.append({"name": k, "value": fmt(res.telescoping[k], d, system),
+                    "number": to_display(res.telescoping[k], d, system), "unit": unit_label(d, system),
+                    "source": source,
+                    "quasi_static": fmt(quasi_static[k], d, system) if quasi_static is not None else None})
+    return out
 
 
-def context(res: LoadsResult, system: str, heatmaps: list[str] | None = None) -> dict:
-    """Template context; `heatmaps` names the configurations whose heat maps are shown (default all)."""
+def context(res: LoadsResult, system: str, heatmaps: list[str] | None = None,
+            quasi_static: dict[str, float] | None = None) -> dict:
+    """Template context; `heatmaps` names the configurations whose heat maps are shown (default all);
+    `quasi_static` the telescoping free body before landings joined it (a design with landings)."""
     names = [c.name for c in res.config.cases] if heatmaps is None else heatmaps
-    return {"tables": tables(res, system), "telescoping": telescoping_rows(res, system),
+    return {"tables": tables(res, system), "telescoping": telescoping_rows(res, system, quasi_static),
             "heatmaps": [f"heatmap_{n}.png" for n in names]}
 
 
