@@ -258,7 +258,7 @@ def _local_range(p, s: Section, nu: float) -> str | None:
     if r / t >= stress.SP8007_MAX_R_OVER_T:
         return f"r/t = {r / t:.0f}: NASA SP-8007 states its knockdown for r/t below {stress.SP8007_MAX_R_OVER_T:.0f}"
     if (p["formula"] == "app_iv" and r / t >= stress.THIN_WALL_MIN_R_OVER_T
-            and not stress.app_iv_local_in_range(1.0, t, r, nu)):
+            and not stress.app_iv_local_in_range(1.0, t, r, nu)):         # E cancels from both sides
         return (f"r/t = {r / t:.0f}: App. IV's 0.4 E t / D exceeds NASA SP-8007's design curve there (above r/t "
                 f"474 for nu = 0.3); use formula = \"sp8007\"")
     return None
