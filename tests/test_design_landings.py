@@ -111,9 +111,10 @@ def test_the_report_defines_every_landing_and_names_the_governing_one(design, re
         assert f'<a href="#landing-{run_id}">landing {run_id}</a> ({outcome.replace("_", " ")}; 35.0 ft/s down' in html
 
 
-def test_landings_declared_as_load_cases_only_say_so_and_pass_on_the_checks(tmp_path):
+def test_landings_declared_as_load_cases_only_say_so_and_are_judged_on_the_checks_alone(tmp_path):
     """role = "load_cases": the same failing landings are reported, the page says plainly that they are load
-    cases only, and the design passes on its checks (exit 0)."""
+    cases only, and the verdict is the checks' alone: the landings meet nothing they are asked to, and the only
+    failures are the two columns below Euler's range (tests/test_cli_audit.py, COLUMN_FAILURES), exit 1."""
     import subprocess
     import sys
     shutil.copytree(EXAMPLES, tmp_path / "ex")
@@ -121,7 +122,11 @@ def test_landings_declared_as_load_cases_only_say_so_and_pass_on_the_checks(tmp_
     cfg.write_text(CONFIG.read_text().replace('envelopes = ["3457"]', 'envelopes = ["3457"]\nrole = "load_cases"'))
     r = subprocess.run([sys.executable, "-m", "alightsize", "design", str(cfg), "--out", str(tmp_path / "o")],
                        capture_output=True, text=True)
-    assert r.returncode == 0 and "landings used as load cases only" in r.stdout
+    summary = json.loads((tmp_path / "o" / "summary.json").read_text())
+    assert r.returncode == 1 and "landings used as load cases only" in r.stdout
+    assert summary["landings_ok"] is True and summary["checks_ok"] is False
+    assert {(c["item"], c["check"]) for c in summary["audit"]["checks"] if not c["ok"]} == {
+        ("Lower Truss", "column_buckling"), ("Peg Leg Strut", "column_buckling")}
     html = (tmp_path / "o" / "report.html").read_text()
     assert "These landings are load cases only" in html and 'fail">fails</span>' in html
 

@@ -86,6 +86,15 @@ def test_every_member_sized_to_its_factor_and_ms_given(lunar):
         assert r.margin == pytest.approx(r.outcome.factor / 1.25 - 1, rel=1e-12)
 
 
+def test_swivel_pin_bears_on_its_lug_with_the_load_its_shear_takes(lunar):
+    """The swivel pin's bearing takes the resultant of AF1 and P2, as its shear does, and is judged on the weaker
+    of the pin's 4130 steel (180 ksi) and the lug's 7178-T6 (69 ksi): the lug's yield, exactly."""
+    recs = {r.outcome.mode: r.outcome for r in lunar.records if r.item.name == "swivel_pin"}
+    lug = alightsize.read_lander(LUNAR).spec.materials["7178-t6"]
+    assert recs["bearing"].load == recs["shear"].load
+    assert recs["bearing"].allowable == lug.yield_strength
+
+
 def test_level_drop_of_the_example_matches_its_closed_form():
     """The example itself (1,500 kg, four vertical legs, the moon's 1.62 m/s^2) dropped level at 3 m/s with its
     dampers off: each axial cell takes a quarter of the load, so the largest stroke d closes the energy balance
@@ -141,6 +150,8 @@ def test_crushing_force_change_reaches_landings_envelopes_and_checks(tmp_path):
 @pytest.mark.parametrize("subs, key", [
     ({'gravity = "moon"': 'gravity = "pluto"'}, "lander.gravity"),
     ({"[members.swivel_pin]": "[members.swivel]"}, "members.swivel"),
+    ({', lug_material = "7178-t6" }': " }"}, "members.swivel_pin.pin.lug_material"),
+    ({"lug_thickness": "lug_thicknes"}, "members.swivel_pin.pin.lug_thicknes"),
     ({'vertical_speed = ["1 m/s", "3 m/s"]': 'vertical_speed = ["3 m/s", "1 m/s"]'}, "requirements.envelope.vertical_speed"),
     ({'load_radius = "10 mm"': 'load_radius = "10 kg"'}, "load_radius"),
     ({"[structure]\n": "[structure]\nbearing = 1\n"}, "structure"),

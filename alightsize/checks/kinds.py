@@ -47,8 +47,7 @@ class Check:
 
     def needs(self) -> tuple[str, ...]:
         """The material properties this check's formulas use."""
-        extra = {"johnson_euler": ("yield_strength",), "sp8007": ("poisson_m",)}.get(self.params.get("formula"), ())
-        return KINDS[self.kind][2] + extra
+        return KINDS[self.kind][2]
 
 
 def _p(node: Node, name: str, dim: str) -> float | None:
@@ -59,15 +58,17 @@ def _p(node: Node, name: str, dim: str) -> float | None:
 # ---------------------------------------------------------------- parameter readers
 
 def _read_load(node: Node, rules: Rules) -> dict:
-    return {"P": node.quantity("load", "force")}
+    """An axial load of either sign (tension or compression): the checks use its magnitude."""
+    return {"P": node.quantity("load", "force", positive=False)}
 
 
 def _read_moment(node: Node, rules: Rules) -> dict:
-    """A moment given directly, or as force x arm (M = P l, App. IV)."""
+    """A moment given directly, or as force x arm (M = P l, App. IV); either sign (the worst fibre is taken)."""
     if node.has("moment"):
-        return {"M": node.quantity("moment", "moment")}
+        return {"M": node.quantity("moment", "moment", positive=False)}
     if node.has("moment_force"):
-        return {"Mf": node.quantity("moment_force", "force"), "arm": node.quantity("moment_arm", "length")}
+        return {"Mf": node.quantity("moment_force", "force", positive=False),
+                "arm": node.quantity("moment_arm", "length")}
     raise node.error("moment", "a moment (\"16150 lbf*in\") or moment_force and moment_arm", "neither")
 
 
@@ -76,7 +77,8 @@ def _read_axial_and_moment(node: Node, rules: Rules) -> dict:
 
 
 def _read_buckling(node: Node, rules: Rules) -> dict:
-    """`formula`: "euler" (App. IV) or "johnson_euler" (Johnson's parabola below the transition slenderness)."""
+    """`formula`: "euler" (App. IV's lines) or "johnson_euler" (Bruhn's); either way Johnson's parabola below the
+    transition slenderness, where Euler's formula does not hold."""
     return {**_read_load(node, rules), "L": node.quantity("length", "length"),
             "formula": node.string("formula", rules.column, choices=("euler", "johnson_euler"))}
 
@@ -91,8 +93,12 @@ def _read_local(node: Node, rules: Rules) -> dict:
 
 
 def _read_bearing(node: Node, rules: Rules) -> dict:
-    return {"P": sum(node.parse_quantity("loads", v, "force") for v in _list(node, "loads")),
-            "d": _p(node, "diameter", "length"), "t": node.quantity("bearing_length", "length")}
+    """`combine`: "resultant" of orthogonal components (default) or "sum" of loads pressing the same surface
+    (App. IV's w1 + w2); `material`: the part the pin bears on (a lug), resolved by the item reader."""
+    comps = [node.parse_quantity("loads", v, "force", positive=False) for v in _list(node, "loads")]
+    return {"components": tuple(comps), "combine": node.string("combine", "resultant", choices=("resultant", "sum")),
+            "d": _p(node, "diameter", "length"), "t": node.quantity("bearing_length", "length"),
+            "material": node.string("material", None)}
 
 
 def _read_double_shear(node: Node, rules: Rules) -> dict:
@@ -107,11 +113,11 @@ def _read_pin(node: Node, rules: Rules) -> dict:
 
 
 def _read_ring(node: Node, rules: Rules) -> dict:
-    return {"P": node.quantity("load", "force"), "span": node.quantity("span", "length")}
+    return {"P": node.quantity("load", "force", positive=False), "span": node.quantity("span", "length")}
 
 
 def _read_cone(node: Node, rules: Rules) -> dict:
-    return {"P": node.quantity("load", "force"), "t": node.quantity("thickness", "length")}
+    return {"P": node.quantity("load", "force", positive=False), "t": node.quantity("thickness", "length")}
 
 
 def _read_theory(node: Node, rules: Rules) -> dict:
@@ -152,10 +158,11 @@ def _list(node: Node, name: str) -> list:
 # ---------------------------------------------------------------- evaluators
 
 def _moment(p: dict) -> tuple[float, Step | None]:
+    """The moment's magnitude |M| (or |P| l): the checks take the worst fibre, whichever side it is on."""
     if "M" in p:
-        return p["M"], None
-    m = p["Mf"] * p["arm"]
-    return m, Step("Moment", "M", "{P} {l}", (("P", p["Mf"], "force"), ("l", p["arm"], "length")), m, "moment")
+        return abs(p["M"]), None
+    m = abs(p["Mf"]) * p["arm"]
+    return m, Step("Moment", "M", "|{P}| {l}", (("P", p["Mf"], "force"), ("l", p["arm"], "length")), m, "moment")
 
 
 def _direct_step(load: float, area: float, label: str = "Compressive stress", symbol: str = "σc") -> Step:
@@ -195,8 +202,8 @@ def _combined_parts(p, s) -> tuple[float, list[Step]]:
     sc = direct.value
     _, sb, steps = _bending_steps(p, s)
     total = stress.combined_stress(sc, sb)
-    steps = [direct, *steps,
-             Step("Combined stress", "σmax", "{σB} + {σC}", (("σB", sb, "stress"), ("σC", sc, "stress")), total, "stress")]
+    steps = [direct, *steps, Step("Combined stress at the worst fibre", "σmax", "|{σB}| + |{σC}|",
+                                  (("σB", sb, "stress"), ("σC", sc, "stress")), total, "stress")]
     return total, steps
 
 
@@ -207,87 +214,134 @@ def _combined(p, s, mat) -> Outcome:
 
 
 def _column(p, s, mat) -> Outcome:
-    a, i, e = s.area(), s.inertia(), mat.elastic_modulus
+    """App. IV's Euler lines (`euler`) or Bruhn's slenderness lines (`johnson_euler`); below the transition
+    slenderness both judge on Johnson's parabola, Euler's formula holding only at or above it."""
+    a, i, e, fy = s.area(), s.inertia(), mat.elastic_modulus, mat.yield_strength
     k = sqrt(i / a)
+    lk, lt = p["L"] / k, stress.transition_slenderness(e, fy)
     direct = _direct_step(p["P"], a)
     sig = direct.value
-    gyration = Step("Radius of gyration", "k", "√({I} / {A})", (("I", i, "second_moment"), ("A", a, "area")), k, "length")
-    if p["formula"] == "johnson_euler":
-        fy, lk = mat.yield_strength, p["L"] / k
-        crit, which = stress.column_stress(e, fy, lk)
-        ek = (("E", e, "stress"), ("Fcy", fy, "stress"))
-        steps = (direct, gyration,
-                 Step("Slenderness", "L/k", "{L} / {k}", (("L", p["L"], "length"), ("k", k, "length")), lk, "dimensionless"),
-                 Step("Transition slenderness (Bruhn 1973 C2.4)", "(L/k)T", "π √(2 {E} / {Fcy})", ek,
-                      stress.transition_slenderness(e, fy), "dimensionless"),
-                 Step("Critical column stress, Johnson parabola (L/k below the transition)", "σcr",
-                      "{Fcy} - ({Fcy} / 2π)² ({L/k})² / {E}", ek + (("L/k", lk, "dimensionless"),), crit, "stress")
-                 if which == "johnson" else
-                 Step("Critical column stress, Euler (L/k at or above the transition)", "σcr", "π² {E} / ({L/k})²",
-                      (("E", e, "stress"), ("L/k", lk, "dimensionless")), crit, "stress"))
-        return Outcome("column_buckling", p["P"], sig, crit, stress.design_factor(crit, sig), steps)
-    crit = stress.euler_stress(e, p["L"], k)
-    pcr = stress.euler_load(e, i, p["L"])
-    steps = (direct, gyration,
-             Step("Critical column stress", "σcB", "π² {E} / ({L} / {k})²",
-                  (("E", e, "stress"), ("L", p["L"], "length"), ("k", k, "length")), crit, "stress"),
-             Step("Critical column load", "Pcr", "π² {E} {I} / {L}²",
-                  (("E", e, "stress"), ("I", i, "second_moment"), ("L", p["L"], "length")), pcr, "force"))
-    return Outcome("column_buckling", p["P"], sig, crit, stress.design_factor(crit, sig), steps)
+    steps = [direct, Step("Radius of gyration", "k", "√({I} / {A})", (("I", i, "second_moment"), ("A", a, "area")),
+                          k, "length")]
+    if p["formula"] == "euler":
+        steps += [Step("Critical column stress (Euler)", "σcB", "π² {E} / ({L} / {k})²",
+                       (("E", e, "stress"), ("L", p["L"], "length"), ("k", k, "length")),
+                       stress.euler_stress(e, p["L"], k), "stress"),
+                  Step("Critical column load (Euler)", "Pcr", "π² {E} {I} / {L}²",
+                       (("E", e, "stress"), ("I", i, "second_moment"), ("L", p["L"], "length")),
+                       stress.euler_load(e, i, p["L"]), "force")]
+        if lk >= lt:
+            return Outcome("column_buckling", p["P"], sig, steps[2].value, stress.design_factor(steps[2].value, sig),
+                           tuple(steps))
+    crit, which = stress.column_stress(e, fy, lk)
+    ek = (("E", e, "stress"), ("Fcy", fy, "stress"))
+    steps += [Step("Slenderness", "L/k", "{L} / {k}", (("L", p["L"], "length"), ("k", k, "length")), lk, "dimensionless"),
+              Step("Transition slenderness (Bruhn 1973 C2.4)", "(L/k)T", "π √(2 {E} / {Fcy})", ek, lt, "dimensionless"),
+              Step("Critical column stress, Johnson parabola (L/k below the transition, where Euler's does not hold)",
+                   "σcr", "{Fcy} - ({Fcy} / 2π)² ({L/k})² / {E}", ek + (("L/k", lk, "dimensionless"),), crit, "stress")
+              if which == "johnson" else
+              Step("Critical column stress, Euler (L/k at or above the transition)", "σcr", "π² {E} / ({L/k})²",
+                   (("E", e, "stress"), ("L/k", lk, "dimensionless")), crit, "stress")]
+    return Outcome("column_buckling", p["P"], sig, crit, stress.design_factor(crit, sig), tuple(steps))
+
+
+def _own_wall(p, s: Section) -> Section:
+    """The section a local-buckling check works on: with the check's own `wall` when it gives one."""
+    return s if p["t"] is None else s.with_dim("wall", p["t"])
+
+
+def _local_range(p, s: Section, nu: float) -> str | None:
+    """Why the check's thin-shell formula does not hold for this wall, or None (r/t >= 10 and < 1500, and App.
+    IV's 0.4 E t / D at most SP-8007's curve); r/t < 10 is not refused: the wall yields first."""
+    t = s.wall
+    r = (s.outside_diameter - t) / 2
+    if r / t >= stress.SP8007_MAX_R_OVER_T:
+        return f"r/t = {r / t:.0f}: NASA SP-8007 states its knockdown for r/t below {stress.SP8007_MAX_R_OVER_T:.0f}"
+    if (p["formula"] == "app_iv" and r / t >= stress.THIN_WALL_MIN_R_OVER_T
+            and not stress.app_iv_local_in_range(1.0, t, r, nu)):         # E cancels from both sides
+        return (f"r/t = {r / t:.0f}: App. IV's 0.4 E t / D exceeds NASA SP-8007's design curve there (above r/t "
+                f"474 for nu = 0.3); use formula = \"sp8007\"")
+    return None
 
 
 def _local(p, s, mat) -> Outcome:
-    t = p["t"] or s.wall
-    d, e = s.outside_diameter, mat.elastic_modulus
+    s = _own_wall(p, s)
+    t, d, e, fy, nu = s.wall, s.outside_diameter, mat.elastic_modulus, mat.yield_strength, 1 / mat.poisson_m
+    problem = _local_range(p, s, nu)
+    if problem:
+        raise ValueError(problem)
+    r = (d - t) / 2
     if "M" in p or "Mf" in p:
         applied, steps = _combined_parts(p, s)
     else:
         steps = [_direct_step(p["P"], s.area())]
         applied = steps[0].value
+    steps.append(Step("Radius to wall", "r/t", "({D} - {t}) / (2 {t})", (("D", d, "length"), ("t", t, "length")),
+                      r / t, "dimensionless"))
+    if r / t < stress.THIN_WALL_MIN_R_OVER_T:
+        crit = fy
+        steps.append(Step("Thick wall (r/t below 10): it yields before it buckles locally", "σcr", "{Fcy}",
+                          (("Fcy", fy, "stress"),), crit, "stress"))
+        return Outcome("local_buckling", p["P"], applied, crit, stress.design_factor(crit, applied), tuple(steps))
     if p["formula"] == "sp8007":
-        r, nu = (d - t) / 2, 1 / mat.poisson_m
         gamma = stress.thin_wall_knockdown(r / t)
-        crit = gamma * stress.classical_cylinder_stress(e, t, r, nu)
+        elastic = gamma * stress.classical_cylinder_stress(e, t, r, nu)
         steps.append(Step("Thin-wall knockdown (NASA SP-8007 eq. 4)", "γ", "1 - 0.901 (1 - exp(-√({r} / {t}) / 16))",
                           (("r", r, "length"), ("t", t, "length")), gamma, "dimensionless"))
         steps.append(Step("Local buckling stress (Timoshenko & Gere eq. 11-13 with γ)", "σLB",
                           "{γ} {E} {t} / ({r} √(3 (1 - {ν}²)))", (("γ", gamma, "dimensionless"), ("E", e, "stress"),
-                          ("t", t, "length"), ("r", r, "length"), ("ν", nu, "dimensionless")), crit, "stress"))
+                          ("t", t, "length"), ("r", r, "length"), ("ν", nu, "dimensionless")), elastic, "stress"))
     else:
-        crit = stress.local_buckling_stress(e, t, d)
+        elastic = stress.local_buckling_stress(e, t, d)
         steps.append(Step("Local buckling stress", "σLB", "0.4 {E} {t} / {D}",
-                          (("E", e, "stress"), ("t", t, "length"), ("D", d, "length")), crit, "stress"))
+                          (("E", e, "stress"), ("t", t, "length"), ("D", d, "length")), elastic, "stress"))
+    crit = stress.local_critical(elastic, fy)
+    if crit < elastic:
+        steps.append(Step("Capped at the compressive yield (the elastic formula holds below it)", "σcr",
+                          "min({σLB}, {Fcy})", (("σLB", elastic, "stress"), ("Fcy", fy, "stress")), crit, "stress"))
     return Outcome("local_buckling", p["P"], applied, crit, stress.design_factor(crit, applied), tuple(steps))
 
 
+def _component_load(comps: tuple[float, ...], combine: str) -> tuple[float, Step]:
+    """The resultant of orthogonal components, or the sum of loads pressing one surface, as a sheet line."""
+    names = tuple((f"P{j + 1}", v, "force") for j, v in enumerate(comps))
+    if combine == "sum":
+        return stress.collinear_sum(*comps), Step("Collinear loads", "P", " + ".join(f"|{{{n}}}|" for n, _, _ in names),
+                                                  names, stress.collinear_sum(*comps), "force")
+    load = stress.resultant(*comps)
+    return load, Step("Resultant pin load", "P", "√(" + " + ".join(f"{{{n}}}²" for n, _, _ in names) + ")",
+                      names, load, "force")
+
+
 def _bearing(p, s, mat) -> Outcome:
+    """P / (d t) against the yield of the weaker of the pin and the part it bears on (Bruhn 1973 D1: the same
+    bearing pressure acts on the pin and on the lug's hole)."""
+    load, lstep = _component_load(p["components"], p["combine"])
     d = p["d"] or s.dims["diameter"]                 # the pin's diameter, else the rod section's
-    sig = stress.bearing_stress(p["P"], d, p["t"])
-    fy = mat.yield_strength
-    steps = (Step("Bearing stress", "σBR", "{P} / ({d} {t})",
-                  (("P", p["P"], "force"), ("d", d, "length"), ("t", p["t"], "length")), sig, "stress"),)
-    return Outcome("bearing", p["P"], sig, fy, stress.design_factor(fy, sig), steps)
+    sig = stress.bearing_stress(load, d, p["t"])
+    steps = [lstep, Step("Bearing stress", "σBR", "{P} / ({d} {t})",
+                         (("P", load, "force"), ("d", d, "length"), ("t", p["t"], "length")), sig, "stress")]
+    fy, lug = mat.yield_strength, p["material"]
+    if lug is not None:
+        fy = min(fy, lug.yield_strength)
+        steps.append(Step(f"Bearing allowable: the weaker of {mat.name} and {lug.name}", "Fbr", "min({Fcy1}, {Fcy2})",
+                          (("Fcy1", mat.yield_strength, "stress"), ("Fcy2", lug.yield_strength, "stress")), fy, "stress"))
+    return Outcome("bearing", load, sig, fy, stress.design_factor(fy, sig), tuple(steps))
 
 
 def _pin(p, s, mat) -> Outcome:
-    comps = p["components"]
-    load = stress.resultant(*comps)
-    names = tuple((f"P{j + 1}", v, "force") for j, v in enumerate(comps))
-    steps = (Step("Resultant pin load", "P", "√(" + " + ".join(f"{{{n}}}²" for n, _, _ in names) + ")",
-                  names, load, "force"),
-             Step("Double-shear allowable load", "Pallow", "{Pallow}", (("Pallow", p["allowable_load"], "force"),),
-                  p["allowable_load"], "force"))
+    load, lstep = _component_load(p["components"], "resultant")
+    steps = (lstep, Step("Double-shear allowable load", "Pallow", "{Pallow}", (("Pallow", p["allowable_load"], "force"),),
+                         p["allowable_load"], "force"))
     return Outcome("shear", load, None, None, stress.design_factor(p["allowable_load"], load), steps)
 
 
 def _double_shear(p, s, mat) -> Outcome:
-    comps = p["components"]
-    load = stress.resultant(*comps)
-    names = tuple((f"P{j + 1}", v, "force") for j, v in enumerate(comps))
+    load, lstep = _component_load(p["components"], "resultant")
     d = p["d"] or s.dims["diameter"]                 # the pin's own diameter, else the rod section's
     tau = stress.pin_shear_stress(load, d, p["planes"])
     allow = stress.shear_allowable(mat.yield_strength)
-    steps = (Step("Resultant pin load", "P", "√(" + " + ".join(f"{{{n}}}²" for n, _, _ in names) + ")", names, load, "force"),
+    steps = (lstep,
              Step("Pin shear stress (Bruhn 1973 D1.4)", "τ", "{P} / ({n} π {d}² / 4)",
                   (("P", load, "force"), ("n", p["planes"], "dimensionless"), ("d", d, "length")), tau, "stress"),
              Step("Shear allowable (maximum shear)", "τallow", "{Fcy} / 2", (("Fcy", mat.yield_strength, "stress"),),
@@ -296,11 +350,14 @@ def _double_shear(p, s, mat) -> Outcome:
 
 
 def _ring(p, s, mat) -> Outcome:
-    m = stress.ring_moment(p["P"], p["span"])
+    m = stress.ring_moment(abs(p["P"]), p["span"])
     i, c = s.inertia(), s.c()
+    if p["span"] / 2 / c < stress.RING_MIN_R_OVER_C:
+        raise ValueError(f"R/c = {p['span'] / 2 / c:.2f}: a ring as a straight beam needs R/c >= "
+                         f"{stress.RING_MIN_R_OVER_C:g} (R = span / 2)")
     sig = stress.bending_stress(m, c, i)
     fy = mat.yield_strength
-    steps = (Step("Ring moment", "M", "{P} {L} / 4", (("P", p["P"], "force"), ("L", p["span"], "length")), m, "moment"),
+    steps = (Step("Ring moment", "M", "|{P}| {L} / 4", (("P", p["P"], "force"), ("L", p["span"], "length")), m, "moment"),
              Step("Bending stress", "σB", "{M} {c} / {I}",
                   (("M", m, "moment"), ("c", c, "length"), ("I", i, "second_moment")), sig, "stress"))
     return Outcome("bending", p["P"], sig, fy, stress.design_factor(fy, sig), steps)
@@ -422,8 +479,8 @@ KINDS: dict[str, tuple[Callable[[Node, Rules], dict], Callable[[dict, Section, M
     "tension": (_read_load, _tension, ("yield_strength",)),
     "bending": (_read_moment, _bending, ("yield_strength",)),
     "combined": (_read_axial_and_moment, _combined, ("yield_strength",)),
-    "column_buckling": (_read_buckling, _column, ("elastic_modulus",)),
-    "local_buckling": (_read_local, _local, ("elastic_modulus",)),
+    "column_buckling": (_read_buckling, _column, ("elastic_modulus", "yield_strength")),
+    "local_buckling": (_read_local, _local, ("elastic_modulus", "yield_strength", "poisson_m")),
     "bearing": (_read_bearing, _bearing, ("yield_strength",)),
     "pin_shear": (_read_pin, _pin, ()),
     "pin_double_shear": (_read_double_shear, _double_shear, ("yield_strength",)),
@@ -455,14 +512,26 @@ def _length(x: float) -> str:
     return f"{fmt(x, 'length', 'US')} ({fmt(x, 'length', 'SI')})"
 
 
-def out_of_range(check: Check, section: Section) -> tuple[str, str, str] | None:
-    """(key, expected, found) when a check's own geometry leaves its formula's domain: a local-buckling wall
-    of the tube's outside radius or more, a plate load circle or inner radius not below the plate radius."""
+def out_of_range(check: Check, section: Section, material: Material) -> tuple[str, str, str] | None:
+    """(key, expected, found) when a check's geometry leaves its formula's domain: a local-buckling wall of the
+    tube's outside radius or more, or outside its formula's r/t range; a ring of R/c below 2; a plate load
+    circle or inner radius not below the plate radius. A key "section.NAME" is the item section's own."""
     p = check.params
     if check.kind == "local_buckling":
         r = section.outside_diameter / 2           # the section's own wall is checked where it is read
         if p["t"] is not None and p["t"] >= r:
             return "wall", f"a wall below the tube's outside radius {_length(r)}", _length(p["t"])
+        own = _own_wall(p, section)
+        problem = _local_range(p, own, 1 / material.poisson_m)
+        if problem:
+            return ("wall" if p["t"] is not None else "section.wall",
+                    "a wall in the range of the local-buckling formula", f"{_length(own.wall)} ({problem})")
+    elif check.kind == "ring_bending":
+        c = section.c()
+        if p["span"] / 2 / c < stress.RING_MIN_R_OVER_C:
+            expected = (f"a span of at least {2 * stress.RING_MIN_R_OVER_C:g} times the section's c {_length(c)} "
+                        "(the straight-beam ring holds for R/c >= 2, R = span / 2)")
+            return "span", expected, _length(p["span"])
     elif check.kind.startswith("plate_"):
         a, _ = _plate_geometry(p, section)
         for key, name, words in (("load_radius", "r0", "a load radius"), ("inner_radius", "b", "an inner radius")):

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import difflib
 import json
 import math
 import re
@@ -15,6 +16,13 @@ from alightsize.common.errors import InputError, warn_input
 _MISSING = object()
 SEED_MAX = 2**32 - 1      # seeds are 32-bit unsigned integers (numpy.random.default_rng takes them whole)
 _INDEXED = re.compile(r"(\w+)\[(\d+)\]")
+
+
+def _close(name: str, candidates) -> str | None:
+    """The candidate `name` is most likely a misspelling of (or of which it is one), if any is close (difflib
+    ratio >= 0.75: 'lenght'/'length' 0.83, 'laod'/'load' 0.75, but 'moment_arm'/'moment_force' 0.73)."""
+    found = difflib.get_close_matches(name, sorted(candidates), n=1, cutoff=0.75)
+    return found[0] if found else None
 
 
 def _describe(value: Any) -> str:
@@ -76,6 +84,9 @@ class Node:
         self._read.add(name)
         if name not in self.data:
             if default is _MISSING:
+                written = _close(name, set(self.data) - self._read)
+                if written is not None:       # named as written, so the user finds it
+                    raise self.error(written, f"the required key {name!r}", f"{written!r} (did you mean {name!r}?)")
                 raise self.error(name, "this key to be present", "nothing")
             return default
         return self.data[name]
@@ -165,14 +176,19 @@ class Node:
         unknown = sorted(set(self.data) - set(names))
         if unknown:
             raise self.error(unknown[0], "one of the known keys (" + ", ".join(sorted(names)) + ")",
-                             f"unknown key {unknown[0]!r}")
+                             _unknown(unknown[0], names))
 
     def finish(self) -> None:
         """Reject keys nobody read: a typo must never pass silently."""
         unknown = sorted(set(self.data) - self._read)
         if unknown:
             known = ", ".join(sorted(self._read)) or "no keys"
-            raise self.error(unknown[0], f"one of the known keys ({known})", f"unknown key {unknown[0]!r}")
+            raise self.error(unknown[0], f"one of the known keys ({known})", _unknown(unknown[0], self._read))
+
+
+def _unknown(key: str, known) -> str:
+    close = _close(key, known)
+    return f"unknown key {key!r}" + (f" (did you mean {close!r}?)" if close else "")
 
 
 def load_toml(path: str | Path) -> Node:

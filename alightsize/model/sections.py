@@ -12,7 +12,7 @@ from alightsize.common.config import Node
 # shape -> (dimensions it is given by, derived properties a config may override with printed values)
 SHAPES = {
     "tube": (("outside_diameter", "inside_diameter", "wall"), ("area", "inertia", "c")),
-    "rod": (("diameter",), ("area",)),
+    "rod": (("diameter",), ("area", "inertia", "c")),
     "rectangle": (("width", "height"), ("area", "inertia", "c")),
     "plate": (("diameter", "thickness", "inner_diameter"), ()),
     "given": ((), ("area", "inertia", "c")),
@@ -63,7 +63,7 @@ class Section:
         return self._property("inertia")
 
     def c(self) -> float:
-        """Distance to the extreme fibre: OD/2 for a tube, h/2 for a rectangle, unless printed."""
+        """Distance to the extreme fibre: OD/2 for a tube, d/2 for a rod, h/2 for a rectangle, unless printed."""
         return self._property("c")
 
 
@@ -73,6 +73,8 @@ _DERIVED = {
     ("tube", "inertia"): lambda s: props.tube_inertia(s.mean_diameter, s.wall),
     ("tube", "c"): lambda s: s.outside_diameter / 2,
     ("rod", "area"): lambda s: props.rod_area(s.dims["diameter"]),
+    ("rod", "inertia"): lambda s: props.rod_inertia(s.dims["diameter"]),
+    ("rod", "c"): lambda s: s.dims["diameter"] / 2,
     ("rectangle", "area"): lambda s: props.rect_area(s.dims["width"], s.dims["height"]),
     ("rectangle", "inertia"): lambda s: props.rect_inertia(s.dims["width"], s.dims["height"]),
     ("rectangle", "c"): lambda s: s.dims["height"] / 2,

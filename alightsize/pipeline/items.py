@@ -113,9 +113,14 @@ def read_item(node: Node, materials: dict[str, Material], required_default: floa
     checks = []
     for c in node.tables("check", optional=True, label="kind"):
         try:
-            checks.append(read_check(c, rules))
+            check = read_check(c, rules)
         except Unloaded:                       # a derived check of a member never loaded in that sense
-            pass
+            continue
+        if check.params.get("material") is not None:      # a bearing check's lug: a material of the library
+            lug = lookup(materials, c)
+            require(lug, "yield_strength", InputError(c.file, c.key("material"), "", ""))
+            check = replace(check, params={**check.params, "material": lug})
+        checks.append(check)
     checks = tuple(checks)
     required = read_required(node, required_default)
     w_node = node.table("weight", optional=True)
@@ -137,17 +142,25 @@ def _validate(item: Item, node: Node) -> None:
         where = InputError(node.file, check.where, "", "")
         for prop in check.needs():
             require(item.material, prop, where)
-        bad = out_of_range(check, item.section)
-        if bad:
-            key, expected, found = bad
-            raise InputError(node.file, f"{check.where}.{key}", expected, found)
         try:
+            bad = out_of_range(check, item.section, item.material)
+            if bad:
+                key, expected, found = bad
+                raise InputError(node.file, node.key(key) if key.startswith("section.") else f"{check.where}.{key}",
+                                 expected, found)
             check.evaluate(item.section, item.material)
         except (KeyError, AttributeError, TypeError) as exc:
             raise InputError(node.file, check.where, f"the item's [section] to give what check {check.kind!r} needs "
                              f"(shapes: {', '.join(SHAPES)})", f"missing {exc}") from None
         except (ValueError, ZeroDivisionError) as exc:
             raise InputError(node.file, check.where, "geometry for which the formula is defined", str(exc)) from None
+
+    for value in (item.size.low, item.size.high) if item.size else ():      # sizes stay in every formula's range
+        for check in item.checks:
+            bad = out_of_range(check, item.section.with_dim(item.size.dimension, value), item.material)
+            if bad:
+                raise InputError(node.file, node.key("size"), f"a size range keeping {check.where} in its formula's "
+                                 f"range: {bad[1]}", f"{item.size.dimension} {units.fmt(value, 'length', 'US')}: {bad[2]}")
 
     if item.weight is not None:
         try:

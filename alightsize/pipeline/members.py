@@ -3,11 +3,12 @@
 
 Articulated legs: NAME is an App. III member (PU1, PL1, R123, ...), a truss tube by default (`role`):
 axial stress, column buckling, local buckling under its envelope load; `role = "rod"`: tension only;
-`role = "pin"`: double shear and bearing of the pin through it. Telescoping legs (App. III free body):
+`role = "pin"`: double shear of the pin through it and bearing on its lug (`pin.lug_material`). Telescoping legs (App. III free body):
 `lower_tube` and `upper_tube` (axial crush AF1 with the bending moment P1 (rho - a) at the pads, the lower
 tube also as a column of the leg's length rho, or `column_length`; each tube weighs its span from the pads,
 rho - a and a, unless `length` is given), `axial_cap` (fixed-edge plate under AF1), `pad_plate`
-(supported plate under P3) and `swivel_pin` (the pin carrying AF1 and P2).
+(supported plate under P3) and `swivel_pin` (the pin carrying the resultant of AF1 and P2, in shear and in
+bearing on its lug).
 
 `rules = "current"` (default) applies Johnson's parabola below the Euler transition, the SP-8007 thin-wall
 knockdown, Roark's equivalent load radius and the Tresca criterion on plates; `rules = "app_iv"` the 1966
@@ -55,14 +56,17 @@ def _plate(kind: str, load: dict, node: Node, rules: Rules) -> list[dict]:
 
 
 def _pin(loads: list[dict], node: Node) -> list[dict]:
-    """A pin of the member's rod section: double (or n-plane) shear and bearing on its lug."""
+    """A pin of the member's rod section: double (or n-plane) shear, and bearing on its lug judged on the weaker
+    of the pin's and the lug's material (Bruhn 1973 D1). `lug_material` is required: the lug is often the softer
+    part (an aluminium lug on a steel pin), and the pin's own material would overstate the bearing allowable."""
     pin = node.table("pin")
-    pin.allow(("lug_thickness", "planes"))
+    pin.allow(("lug_thickness", "lug_material", "planes"))
     t = pin.raw("lug_thickness")
+    lug = pin.string("lug_material")
     planes = pin.integer("planes", 2, minimum=1)
     pin.finish()
     return [{"kind": "pin_double_shear", "loads": loads, "planes": planes},
-            {"kind": "bearing", "loads": loads, "bearing_length": t}]
+            {"kind": "bearing", "loads": loads, "bearing_length": t, "material": lug}]
 
 
 def telescoping_checks(name: str, node: Node, leg: TelescopingLeg, rules: Rules) -> list[dict]:
