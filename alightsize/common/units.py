@@ -46,6 +46,16 @@ DIMS = {d.name: d for d in (
     Dim("damping", 1, 0, -1),
 )}
 
+# The magnitudes an input quantity may have, SI (zero is always allowed; sign rules are the key's own): wide
+# enough for any landing gear from a model to a crewed lander, narrow enough that no formula under- or
+# overflows a double (a 1e-311 m diameter, a 1e300 m leg). docs/reference/units.md lists them.
+RANGES = {"length": (1e-6, 1e5, "m"), "area": (1e-12, 1e4, "m^2"), "second_moment": (1e-24, 1e2, "m^4"),
+          "mass": (1e-6, 1e9, "kg"), "force": (1e-9, 1e12, "N"), "moment": (1e-9, 1e12, "N*m"),
+          "stress": (1e-6, 1e13, "Pa"), "density": (1e-3, 1e5, "kg/m^3"), "velocity": (1e-12, 1e4, "m/s"),
+          "acceleration": (1e-12, 1e5, "m/s^2"), "time": (1e-12, 1e6, "s"), "inertia": (1e-12, 1e12, "kg*m^2"),
+          "energy": (1e-9, 1e12, "J"), "spring_rate": (1e-9, 1e13, "N/m"), "angular_velocity": (1e-12, 1e4, "rad/s"),
+          "damping": (1e-12, 1e12, "N*s/m"), "dimensionless": (1e-300, 1e12, ""), "angle": (1e-300, 100.0, "rad")}
+
 # What a user most likely meant when the dimension is wrong: (wanted, found) -> hint.
 _HINTS = {("force", (1, 0, 0)): " (write lbf for pound-force; lb is pound-mass)",
           ("moment", (1, 1, 0)): " (write lbf*in for a moment; lb is pound-mass)"}
@@ -99,18 +109,20 @@ def _parse_text(text: str, dim: str) -> float:
     if dim == "angle":
         if not q.dimensionless:
             raise ValueError(f"an angle like \"{example(dim)}\"")
-        value = float(q.to("rad").magnitude)
-        if not math.isfinite(value):
-            raise ValueError("a finite angle")
-        return value
+        return _in_range(float(q.to("rad").magnitude), dim)
     want = DIMS[dim]
     if dimension_of(q) != (want.mass, want.length, want.time):
         hint = _HINTS.get((dim, dimension_of(q)), "")
         article = "an" if dim[0] in "aeiou" else "a"
         raise ValueError(f"{article} {dim} like \"{example(dim)}\"{hint}")
-    value = float(q.to_base_units().magnitude)
-    if not math.isfinite(value):
-        raise ValueError("a finite quantity")
+    return _in_range(float(q.to_base_units().magnitude), dim)
+
+
+def _in_range(value: float, dim: str) -> float:
+    """`value` (SI) when zero or of a magnitude within RANGES[dim]; else ValueError saying the range."""
+    low, high, unit = RANGES[dim]
+    if value != 0 and not low <= abs(value) <= high:          # NaN fails the comparison too
+        raise ValueError(f"a magnitude from {low:g} to {high:g} {unit} (or 0)".rstrip())
     return value
 
 
