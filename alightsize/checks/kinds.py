@@ -396,7 +396,7 @@ def _outside(bad: tuple[str, str, str], load: float) -> Outcome:
 
 
 def _thin_limit(p, t: float, span: float) -> tuple[str, str, str] | None:
-    """Thin plate: t <= span/2, a quarter of the least transverse dimension (Roark 1954 ch. 10)."""
+    """Thin plate: t <= span/2, a quarter of the least transverse dimension (Young & Budynas 2002 §11.1)."""
     if t > span / 2 and not p["thick"]:
         expected = (f"a thin plate, thickness (this check's or the section's) at most {_length(span / 2)}, a quarter "
                     "of the plate's least transverse dimension (accept_thick_plate = true applies the thin-plate "

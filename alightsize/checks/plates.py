@@ -5,7 +5,7 @@ SI throughout; m = 1/nu is Roark's reciprocal Poisson ratio; logarithms natural.
 bending stresses (sigma_r, sigma_t) on a face of the plate, 6 M / t², at the point its docstring names, positive
 in tension on the face away from the load (Roark's sign). Each states its range; the checks refuse inputs
 outside it (alightsize.checks.kinds). Every plate formula assumes a thin plate: thickness at most a quarter of
-its least transverse dimension, t <= (a - b)/2 with b = 0 for a solid plate (Roark 1954 ch. 10 assumptions).
+its least transverse dimension, t <= (a - b)/2 with b = 0 for a solid plate (Young & Budynas 2002 §11.1).
 """
 
 from __future__ import annotations
@@ -13,6 +13,7 @@ from __future__ import annotations
 from math import log, pi, sqrt
 
 import numpy as np
+from scipy.special import spence
 
 EDGES = ("free", "supported", "fixed")
 APP_IV_HUB_MAX = 0.3          # r0/a up to which the 1954 hub-couple formula is used (see fixed_center_moment)
@@ -133,6 +134,18 @@ _RHO, _RHO_W = np.polynomial.legendre.leggauss(16)   # quadrature over the load 
 _BETA = 2 * pi * np.arange(32) / 32                   # converged to 1e-11 for p + r0 <= a (test_plates.py)
 
 
+def _image_sums(z: np.ndarray, c: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """sum over n >= 1 of z^n n^k / (2n + c), k = 0, 1, 2, for |z| < 1. The k = 0 sum is -ln(1 - z)/2 - c Li2(z)/4
+    plus c²/4 sum z^n / (n² (2n + c)), whose terms fall as n^-3 (summed to |z|^n < 1e-17 or 2,000 terms: within
+    3e-8 as |z| -> 1); k = 1, 2 follow from n/(2n+c) = 1/2 - (c/2)/(2n+c), n²/(2n+c) = n/2 - c/4 + (c²/4)/(2n+c)."""
+    last = min(2000, int(np.ceil(np.log(1e-17) / np.log(max(float(np.abs(z).max()), 1e-3)))))
+    n = np.arange(1, last + 1).reshape((-1,) + (1,) * z.ndim)
+    powers = np.cumprod(np.broadcast_to(z, n.shape[:1] + z.shape), axis=0)
+    s = -np.log(1 - z) / 2 - c * spence(1 - z) / 4 + c * c / 4 * np.sum(powers / (n * n * (2 * n + c)), axis=0)
+    geometric = z / (1 - z)
+    return s, geometric / 2 - c * s / 2, z / (2 * (1 - z) ** 2) - c * geometric / 4 + c * c * s / 4
+
+
 def supported_eccentric_load(w: float, t: float, a: float, p: float, r0: float, m: float) -> tuple[float, float]:
     """Edge simply supported, W uniform over a circle r0 centred at radius p; at the centre of the load circle
     (radial, tangential), for 0 <= p, p + r0 <= a. Exact thin-plate theory.
@@ -140,7 +153,7 @@ def supported_eccentric_load(w: float, t: float, a: float, p: float, r0: float, 
     The Green's function of the supported plate is the clamped plate's (Michell 1902; Timoshenko & Woinowsky-
     Krieger 1959 ch. 9) plus a series that frees the edge moment, with image terms (rs/a²)^n cos(n psi)/(2n + 1 + nu).
     Its singular part rho² ln rho is integrated over the circle in closed form, the smooth rest by Gauss
-    quadrature. At p = 0 this is supported_center_load.
+    quadrature (_image_sums for the series). At p = 0 this is supported_center_load.
     """
     if p == 0:
         return supported_center_load(w, t, a, r0, m)
@@ -160,11 +173,10 @@ def supported_eccentric_load(w: float, t: float, a: float, p: float, r0: float, 
     edge = -2 * (a * a - s2) / (a * a)
     wxx = np.sum(weight * (2 * h - 4 * dx * qx / big_q + rho2 * hxx + edge))
     wyy = np.sum(weight * (2 * h + 4 * eta * qy / big_q + rho2 * hyy + edge))
-    # supported edge: (a² - s²)(a² - r²)/a² [2/(1+nu) + sum 4 (r s/a²)^n cos(n psi)/(2n+1+nu)]
-    x = p * np.sqrt(s2) / (a * a)
-    n = np.arange(1, int(np.ceil(np.log(1e-17) / np.log(max(float(x.max()), 1e-3)))) + 2)[:, None, None]
-    terms = 4 / (2 * n + 1 + nu) * x[None] ** n * np.cos(n * np.arctan2(eta, xi)[None])
-    s0, s1, s2n, snn = 2 / (1 + nu) + terms.sum(0), (n * terms).sum(0), (n * (n - 1) * terms).sum(0), (n * n * terms).sum(0)
+    # supported edge: (a² - s²)(a² - r²)/a² [2/(1+nu) + 4 Re sum z^n/(2n + 1 + nu)], z = r s e^(i psi)/a²
+    sums = _image_sums(p * (xi + 1j * eta) / (a * a), 1 + nu)
+    s0, s1, snn = 2 / (1 + nu) + 4 * sums[0].real, 4 * sums[1].real, 4 * sums[2].real
+    s2n = snn - s1
     k, pa = weight * (a * a - s2) / (a * a), a * a - p * p
     wxx += np.sum(k * (-2 * s0 - 4 * s1 + pa * s2n / (p * p)))
     wyy += np.sum(k * (-2 * s0 + pa * (s1 - snn) / (p * p)))
