@@ -641,7 +641,10 @@ def out_of_range(check: Check, section: Section) -> tuple[str, str, str] | None:
         if p["t"] is not None and p["t"] >= r:
             return "wall", f"a wall below the tube's outside radius {_length(r)}", _length(p["t"])
     elif check.kind.startswith("plate_"):
-        return _plate_range(p, section)
+        try:
+            return _plate_range(p, section)
+        except (KeyError, AttributeError, TypeError):     # a dimension missing: the evaluation names it
+            return None
     return None
 
 
