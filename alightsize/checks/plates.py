@@ -15,7 +15,6 @@ from math import log, pi, sqrt
 import numpy as np
 from scipy.special import spence
 
-EDGES = ("free", "supported", "fixed")
 APP_IV_HUB_MAX = 0.3          # r0/a up to which the 1954 hub-couple formula is used (see fixed_center_moment)
 
 
