@@ -28,7 +28,7 @@ DESIGN_FACTORS = {
     ("3457", "Parallelogram Post", "combined"): (1.26, 69_000, 54_400),     # l. 4298
     ("3457", "Peg Leg Energy Absorber Rod", "tension"): (1.21, 69_000, 57_000),  # l. 4316
     # l. 4334-4338: sigma_max printed 55,200, then f = 69,000/55,000 = 1.25 (either gives 1.25)
-    ("3457", "Peg Leg Absorber Cap", "plate_annular_uniform_pressure"): (1.25, 69_000, 55_200),
+    ("3457", "Peg Leg Absorber Cap", "plate_annular_inner_supported_uniform_pressure"): (1.25, 69_000, 55_200),
     ("3457", "Parallelogram Absorber Rods", "tension"): (1.21, 69_000, 57_000),  # l. 4358
     ("3457", "Parallelogram Absorber Caps", "plate_supported_eccentric_and_distributed"):
         (4.94, 34_500, 6_975),                                              # l. 4390: tau_max 6,975
@@ -40,7 +40,8 @@ DESIGN_FACTORS = {
     ("68", "Peg Leg Cone", "cone_tension"): (1.43, 69_000, 48_000),         # l. 4478 "Same as 3, 4, 5 and 7"
     ("68", "Parallelogram Post", "combined"): (1.21, 69_000, 57_100),       # l. 4512
     ("68", "Peg Leg Energy Absorber Rod", "tension"): (1.21, 69_000, 57_000),   # l. 4514-4516 "Same as ..."
-    ("68", "Peg Leg Absorber Cap", "plate_annular_uniform_pressure"): (1.25, 69_000, 55_200),  # l. 4518-4520 "Same"
+    # l. 4518-4520 "Same"
+    ("68", "Peg Leg Absorber Cap", "plate_annular_inner_supported_uniform_pressure"): (1.25, 69_000, 55_200),
     ("68", "Parallelogram Absorber Rods", "tension"): (1.21, 69_000, 57_000),   # l. 4538
     ("68", "Parallelogram Absorber Caps", "plate_supported_eccentric_and_distributed"):
         (3.84, 34_500, 8_999),                                              # l. 4568: tau_max 8,999
@@ -52,7 +53,7 @@ DESIGN_FACTORS = {
     ("9", "Peg Leg Cone", "cone_tension"): (1.20, 69_000, 57_500),          # l. 4682
     ("9", "Parallelogram Post", "combined"): (1.21, 69_000, 56_900),        # l. 4714
     ("9", "Peg Leg Energy Absorber Rod", "tension"): (1.20, 69_000, 57_300),    # l. 4732
-    ("9", "Peg Leg Absorber Cap", "plate_annular_uniform_pressure"): (1.46, 69_000, 47_203),  # l. 4752
+    ("9", "Peg Leg Absorber Cap", "plate_annular_inner_supported_uniform_pressure"): (1.46, 69_000, 47_203),  # l.4752
     ("9", "Parallelogram Absorber Rods", "tension"): (1.20, 69_000, 57_200),    # l. 4772
     ("9", "Parallelogram Absorber Caps", "plate_supported_eccentric_and_distributed"):
         (10.23, 34_500, 3_372),                                             # l. 4806: tau_max 3,372

@@ -121,10 +121,16 @@ def _read_cone(node: Node, rules: Rules) -> dict:
 
 
 def _read_theory(node: Node, rules: Rules) -> dict:
-    """`theory`: "app_iv" ((sigma_r + sigma_t)/2 against Fcy/2), "tresca" or "von_mises" (principal stresses,
-    sigma_z = 0, against Fcy); `equivalent_radius`: Roark's r0' for a load circle r0 < 0.5 t."""
+    """`theory`: "app_iv" (|sigma_r + sigma_t|/2 against Fcy/2), "tresca" or "von_mises" (principal stresses,
+    sigma_z = 0, against Fcy); `equivalent_radius`: Roark's r0' for a load circle r0 < 0.5 t; with
+    `accept_thick_plate` the thin-plate range is not enforced."""
     return {"theory": node.string("theory", rules.plate, choices=("app_iv", "tresca", "von_mises")),
-            "r0_equivalent": node.boolean("equivalent_radius", rules.equivalent_radius)}
+            "r0_equivalent": node.boolean("equivalent_radius", rules.equivalent_radius), **_read_thick(node)}
+
+
+def _read_thick(node: Node) -> dict:
+    """`accept_thick_plate`: apply thin-plate formulas to a plate thicker than their range, as App. IV does."""
+    return {"thick": node.boolean("accept_thick_plate", False)}
 
 
 def _read_plate(node: Node, rules: Rules) -> dict:
@@ -132,19 +138,42 @@ def _read_plate(node: Node, rules: Rules) -> dict:
             "a": _p(node, "radius", "length"), "t": _p(node, "thickness", "length"), **_read_theory(node, rules)}
 
 
-def _read_plate_moment(node: Node, rules: Rules) -> dict:
-    return {**_read_plate(node, rules), **_read_moment(node, rules), "pi_squared": node.boolean("pi_squared", False)}
+def _read_plate_moment(edge: str) -> Callable[[Node, Rules], dict]:
+    """A couple through a rigid hub of radius `load_radius` plus the load over it; outer edge `edge`. `formula`:
+    "thin_plate", or "app_iv" (Roark 1954 p. 197, fixed edge only; `pi_squared` with it)."""
+    def read(node: Node, rules: Rules) -> dict:
+        choices = ("thin_plate", "app_iv") if edge == "fixed" else ("thin_plate",)
+        formula = node.string("formula", rules.plate_formula if rules.plate_formula in choices else "thin_plate",
+                              choices=choices)
+        squared = node.boolean("pi_squared", False) if edge == "fixed" else False
+        if squared and formula != "app_iv":
+            raise node.error("pi_squared", 'pi_squared only with formula = "app_iv" (the 1954 hub formula)',
+                             f"formula = {formula!r}")
+        return {**_read_plate(node, rules), **_read_moment(node, rules), "edge": edge, "formula": formula,
+                "pi_squared": squared}
+    return read
 
 
-def _read_annular(node: Node, rules: Rules) -> dict:
-    return {"q": node.quantity("pressure", "stress"), "a": _p(node, "radius", "length"),
-            "b": _p(node, "inner_radius", "length"), "t": _p(node, "thickness", "length")}
+def _read_annular(outer: str, inner: str) -> Callable[[Node, Rules], dict]:
+    """An annular plate under uniform pressure, its outer and inner edge `outer` and `inner`."""
+    def read(node: Node, rules: Rules) -> dict:
+        return {"q": node.quantity("pressure", "stress"), "a": _p(node, "radius", "length"),
+                "b": _p(node, "inner_radius", "length"), "t": _p(node, "thickness", "length"),
+                "outer": outer, "inner": inner, **_read_thick(node)}
+    return read
 
 
 def _read_eccentric(node: Node, rules: Rules) -> dict:
+    """`formula`: "thin_plate" or "app_iv" (App. IV's load on a plate of radius a - p); `radius_tangential` only
+    with "app_iv" (it reproduces a printed radius)."""
+    formula = node.string("formula", rules.plate_formula, choices=("thin_plate", "app_iv"))
+    a_t = _p(node, "radius_tangential", "length")
+    if a_t is not None and formula != "app_iv":
+        raise node.error("radius_tangential", 'radius_tangential only with formula = "app_iv" (it reproduces the '
+                         "radius App. IV printed)", f"formula = {formula!r}")
     return {"W": node.quantity("load", "force"), "W_total": node.quantity("distributed_load", "force"),
             "p": node.quantity("load_offset", "length"), "r0": node.quantity("load_radius", "length"),
-            "a": _p(node, "radius", "length"), "a_t": _p(node, "radius_tangential", "length"),
+            "a": _p(node, "radius", "length"), "a_t": a_t, "formula": formula,
             "t": _p(node, "thickness", "length"), **_read_theory(node, rules)}
 
 
@@ -378,28 +407,98 @@ def _plate_geometry(p, s: Section) -> tuple[float, float]:
     return a, t
 
 
-def _shear_outcome(sr: float, st: float, load: float, mat: Material, steps: list[Step], theory: str = "app_iv") -> Outcome:
-    """App. IV's (sigma_r + sigma_t)/2 against Fcy/2, or an equivalent stress of the principal stresses
-    (sigma_z = 0) against Fcy: Tresca or von Mises."""
-    if theory != "app_iv":
-        fn, name = (stress.tresca_stress, "Tresca") if theory == "tresca" else (stress.von_mises_stress, "von Mises")
-        eq = fn(sr, st, 0.0)
-        formula = ("max(|{σr} - {σt}|, |{σt}|, |{σr}|)" if theory == "tresca"
-                   else "√(({σr} - {σt})² + {σt}² + {σr}²) / √2")
-        steps.append(Step(f"Equivalent stress ({name}, principal stresses, σz = 0)", "σeq", formula,
-                          (("σr", sr, "stress"), ("σt", st, "stress")), eq, "stress"))
-        fy = mat.yield_strength
-        return Outcome("plate_bending", load, eq, fy, stress.design_factor(fy, eq), tuple(steps))
-    tau = stress.report_max_shear(sr, st)
-    allow = stress.shear_allowable(mat.yield_strength)
-    steps.append(Step("Maximum shear stress", "τmax", "({σr} + {σt}) / 2",
-                      (("σr", sr, "stress"), ("σt", st, "stress")), tau, "stress"))
-    steps.append(Step("Shear allowable", "τallow", "{Fcy} / 2", (("Fcy", mat.yield_strength, "stress"),), allow, "stress"))
-    return Outcome("plate_bending", load, tau, allow, stress.design_factor(allow, tau), tuple(steps))
+def _equivalent(sr: float, st: float, theory: str) -> float:
+    """App. IV's |sigma_r + sigma_t|/2, or the Tresca or von Mises stress of (sigma_r, sigma_t, 0)."""
+    if theory == "app_iv":
+        return abs(stress.report_max_shear(sr, st))
+    return (stress.tresca_stress if theory == "tresca" else stress.von_mises_stress)(sr, st, 0.0)
+
+
+_THEORY = {"app_iv": ("Maximum shear stress", "τmax", "|{σr} + {σt}| / 2"),
+           "tresca": ("Equivalent stress (Tresca, principal stresses, σz = 0)", "σeq",
+                      "max(|{σr} - {σt}|, |{σt}|, |{σr}|)"),
+           "von_mises": ("Equivalent stress (von Mises, principal stresses, σz = 0)", "σeq",
+                         "√(({σr} - {σt})² + {σt}² + {σr}²) / √2")}
+
+
+def _equivalent_step(sr: float, st: float, theory: str, where: str) -> Step:
+    label, symbol, formula = _THEORY[theory]
+    return Step(f"{label}, {where}", symbol, formula, (("σr", sr, "stress"), ("σt", st, "stress")),
+                _equivalent(sr, st, theory), "stress")
+
+
+def _verdict(eq: float, load: float, mat: Material, steps: list[Step], theory: str) -> Outcome:
+    """App. IV's shear stress against Fcy/2, or an equivalent stress against Fcy; f from magnitudes."""
+    fy = mat.yield_strength
+    allow = stress.shear_allowable(fy) if theory == "app_iv" else fy
+    if theory == "app_iv":
+        steps.append(Step("Shear allowable", "τallow", "{Fcy} / 2", (("Fcy", fy, "stress"),), allow, "stress"))
+    return Outcome("plate_bending", load, eq, allow, stress.design_factor(allow, eq), tuple(steps))
+
+
+def _shear_outcome(points: list[tuple[str, float, float]], load: float, mat: Material, steps: list[Step],
+                   theory: str) -> Outcome:
+    """Judge the governing one of `points` (where, sigma_r, sigma_t) by `theory`."""
+    where, sr, st = max(points, key=lambda pt: _equivalent(pt[1], pt[2], theory))
+    step = _equivalent_step(sr, st, theory, f"{where} (governs)" if len(points) > 1 else where)
+    return _verdict(step.value, load, mat, [*steps, step], theory)
+
+
+def _outside(bad: tuple[str, str, str], load: float) -> Outcome:
+    """A plate evaluated outside its formula's range (a sizing scan past it): no factor, f = 0, never a pass."""
+    key, expected, found = bad
+    return Outcome("plate_bending", load, None, None, 0.0,
+                   (Step(f"Outside the formula's range: {key} {found}, expected {expected}", "f", "{f}",
+                         (("f", 0.0, "dimensionless"),), 0.0, "dimensionless"),))
+
+
+def _thin_limit(p, t: float, span: float) -> tuple[str, str, str] | None:
+    """Thin plate: t <= span/2, a quarter of the least transverse dimension (Young & Budynas 2002 §11.1)."""
+    if t > span / 2 and not p["thick"]:
+        expected = (f"a thin plate, thickness (this check's or the section's) at most {_length(span / 2)}, a quarter "
+                    "of the plate's least transverse dimension (accept_thick_plate = true applies the thin-plate "
+                    "formula beyond it, as App. IV does)")
+        return "thickness", expected, _length(t)
+    return None
+
+
+def _plate_range(p, s: Section) -> tuple[str, str, str] | None:
+    """(key, expected, found) when a plate check leaves its formula's range (ranges: alightsize.checks.plates)."""
+    a, t = _plate_geometry(p, s)
+    if "b" in p:                                                   # annular plate
+        b = p["b"] or s.dims["inner_diameter"] / 2
+        if b >= a:
+            return "inner_radius", f"an inner radius below the plate radius {_length(a)}", _length(b)
+        return _thin_limit(p, t, a - b)
+    r0 = p["r0"]
+    if "edge" in p:                                                # couple through a rigid hub of radius r0
+        if p["formula"] == "app_iv" and r0 > plates.APP_IV_HUB_MAX * a:
+            expected = (f"a hub radius at most {plates.APP_IV_HUB_MAX:g} times the plate radius, "
+                        f"{_length(plates.APP_IV_HUB_MAX * a)}, for the 1954 formula (formula = \"thin_plate\" "
+                        "holds up to the plate radius)")
+            return "load_radius", expected, _length(r0)
+        if r0 >= a:
+            return "load_radius", f"a hub radius below the plate radius {_length(a)}", _length(r0)
+        return _thin_limit(p, t, a - r0)
+    if "p" in p:                                                   # eccentric load circle
+        r = plates.equivalent_radius(r0, t) if p["r0_equivalent"] else r0
+        if p["p"] + r > a:
+            expected = f"a load circle inside the plate, load_offset + load_radius at most the plate radius {_length(a)}"
+            return "load_offset", expected, f"{_length(p['p'])} + {_length(r)}" + (" (r0')" if r != r0 else "")
+        return _thin_limit(p, t, a)
+    if r0 > a:
+        return "load_radius", f"a load radius at most the plate radius {_length(a)}", _length(r0)
+    return _thin_limit(p, t, a)
 
 
 _FIXED = "3 {W} ({m}+1) / (2π {m} {t}²) [ln({a}/{r0}) + {r0}²/(4 {a}²)]"
+_FIXED_EDGE = "-3 {W} / (2π {t}²) [1 - {r0}²/(2 {a}²)], σt = σr/m"
 _SUPPORTED = "3 {W} / (2π {m} {t}²) [{m} + ({m}+1) ln({a}/{r0}) - ({m}-1) {r0}²/(4 {a}²)]"
+_CENTER = {"fixed": (("centre", plates.fixed_center_load, _FIXED, "edge fixed, at the centre (Roark 1954 p. 196)"),
+                     ("edge", plates.fixed_edge_load, _FIXED_EDGE,
+                      "edge fixed, at the edge (thin plate, Timoshenko & Woinowsky-Krieger 1959 ch. 3)")),
+           "supported": (("centre", plates.supported_center_load, _SUPPORTED,
+                          "edge supported, at the centre (Roark 1954 p. 194-195)"),)}
 
 
 def _load_radius(p, t: float) -> tuple[float, list[Step]]:
@@ -412,65 +511,125 @@ def _load_radius(p, t: float) -> tuple[float, list[Step]]:
                     (("r0", r0, "length"), ("t", t, "length")), r, "length")]
 
 
-def _plate_common(p, s, mat, fn, label, ref, formula) -> Outcome:
-    a, t = _plate_geometry(p, s)
+def _center_points(p, edge: str, a: float, t: float, m: float) -> tuple[list[tuple[str, float, float]], list[Step]]:
+    """The stresses of the load W over r0 (or r0') at each point that may govern, with their steps."""
     r0, steps = _load_radius(p, t)
-    sr, st = fn(p["W"], t, a, r0, mat.poisson_m)
-    steps.append(Step(f"{label} ({ref})", "σr = σt", formula,
-                      (("W", p["W"], "force"), ("t", t, "length"), ("a", a, "length"), ("r0", r0, "length"),
-                       ("m", mat.poisson_m, "dimensionless")), st, "stress"))
-    return _shear_outcome(sr, st, p["W"], mat, steps, p["theory"])
+    points = []
+    for where, fn, formula, label in _CENTER[edge]:
+        sr, st = fn(p["W"], t, a, r0, m)
+        steps.append(Step(f"Stress due to load, {label}", "σr", formula,
+                          (("W", p["W"], "force"), ("t", t, "length"), ("a", a, "length"), ("r0", r0, "length"),
+                           ("m", m, "dimensionless")), sr, "stress"))
+        points.append((f"load at the {where}", sr, st))
+    return points, steps
 
 
-def _plate_fixed(p, s, mat) -> Outcome:
-    return _plate_common(p, s, mat, plates.fixed_center_load, "Fixed edge, central load", "Roark 1954 p. 196", _FIXED)
-
-
-def _plate_supported(p, s, mat) -> Outcome:
-    return _plate_common(p, s, mat, plates.supported_center_load, "Supported edge, central load",
-                         "Roark 1954 p. 194-195", _SUPPORTED)
+def _plate_center(edge: str) -> Callable[[dict, Section, Material], Outcome]:
+    def evaluate(p, s, mat) -> Outcome:
+        bad = _plate_range(p, s)
+        if bad:
+            return _outside(bad, p["W"])
+        a, t = _plate_geometry(p, s)
+        points, steps = _center_points(p, edge, a, t, mat.poisson_m)
+        return _shear_outcome(points, p["W"], mat, steps, p["theory"])
+    return evaluate
 
 
 def _plate_moment(p, s, mat) -> Outcome:
+    """Couple through a rigid hub plus the load over it: each part at its own governing point, their equivalent
+    stresses added (an upper bound where the two do not coincide; App. IV adds them the same way)."""
+    bad = _plate_range(p, s)
+    if bad:
+        return _outside(bad, p["W"])
     a, t = _plate_geometry(p, s)
-    m, mstep = _moment(p)
-    sm, _ = plates.fixed_center_moment(m, t, a, p["r0"], mat.poisson_m, p["pi_squared"])
-    sw, _ = plates.fixed_center_load(p["W"], t, a, p["r0"], mat.poisson_m)
+    m, r0 = mat.poisson_m, p["r0"]
+    moment, mstep = _moment(p)
     steps = [mstep] if mstep else []
-    steps += [Step("Stress due to moment (Roark 1954 p. 197)", "σM",
-                   "3 {M} / (4 π" + ("²" if p["pi_squared"] else "") + " {t}² {r0}) [1 + (m+1)/m ln(2(0.45 {a} - {r0}) / (0.45 k {a}))]",
-                   (("M", m, "moment"), ("t", t, "length"), ("r0", p["r0"], "length"), ("a", a, "length")), sm, "stress"),
-              Step("Stress due to axial load (Roark 1954 p. 196)", "σW", _FIXED,
-                   (("W", p["W"], "force"), ("t", t, "length"), ("a", a, "length"), ("r0", p["r0"], "length"),
-                    ("m", mat.poisson_m, "dimensionless")), sw, "stress")]
-    total = sm + sw
-    return _shear_outcome(total, total, p["W"], mat, steps, p["theory"])
+    ins = (("M", moment, "moment"), ("t", t, "length"), ("r0", r0, "length"), ("a", a, "length"))
+    if p["formula"] == "app_iv":
+        sm = plates.fixed_center_moment(moment, t, a, r0, m, p["pi_squared"])
+        steps.append(Step("Stress due to moment (Roark 1954 p. 197)", "σM",
+                          "3 {M} / (4 π" + ("²" if p["pi_squared"] else "") + " {t}² {r0}) [1 + (m+1)/m "
+                          "ln(2(0.45 {a} - {r0}) / (0.45 k {a}))]", ins, sm[0], "stress"))
+    else:
+        sm = plates.hub_couple(moment, t, a, r0, m, p["edge"])
+        fixed = p["edge"] == "fixed"
+        steps.append(Step(f"Stress due to moment at the hub edge, rigid hub, edge {p['edge']} (thin plate)", "σM",
+                          "3 {M} F / (π {r0} {t}²), F = " + ("({a}² - {r0}²)/({a}² + {r0}²)" if fixed else
+                          "[(3+ν){a}⁴ - 2(1+ν){a}²{r0}² - (1-ν){r0}⁴] / [(3+ν){a}⁴ + (1-ν){r0}⁴]"),
+                          ins, sm[0], "stress"))
+    points, load_steps = _center_points(p, p["edge"], a, t, m)
+    steps += load_steps
+    where, wr, wt = max(points, key=lambda pt: _equivalent(pt[1], pt[2], p["theory"]))
+    parts = (_equivalent_step(*sm, p["theory"], "couple at the hub edge"),
+             _equivalent_step(wr, wt, p["theory"], where))
+    total = parts[0].value + parts[1].value
+    steps += [*parts, Step("Couple and load added", parts[0].symbol, "{couple} + {load}",
+                           (("couple", parts[0].value, "stress"), ("load", parts[1].value, "stress")), total, "stress")]
+    return _verdict(total, p["W"], mat, steps, p["theory"])
+
+
+_CASE_2 = {("supported", "free"): "2a", ("fixed", "free"): "2e", ("free", "supported"): "2i", ("free", "fixed"): "2j"}
 
 
 def _plate_annular(p, s, mat) -> Outcome:
-    a = p["a"] or s.dims["diameter"] / 2
+    """Both edges of the annular plate, judged by Tresca (there sigma_r = 0 or sigma_t = nu sigma_r, so Tresca is
+    the larger principal stress App. IV judged, against Fcy)."""
+    bad = _plate_range(p, s)
+    a, t = _plate_geometry(p, s)
     b = p["b"] or s.dims["inner_diameter"] / 2
-    t = p["t"] or s.dims["thickness"]
-    _, st = plates.annular_uniform_pressure(p["q"], t, a, b, mat.poisson_m)
-    fy = mat.yield_strength
-    steps = (Step("Tangential stress, annular plate, uniform pressure (Roark 1954 p. 199)", "σmax = σt",
-                  "3{q} / (4 m {t}² ({a}² - {b}²)) [4a⁴(m+1) ln(a/b) + 4a²b² + b⁴(m-1) - a⁴(m+3)]",
-                  (("q", p["q"], "stress"), ("t", t, "length"), ("a", a, "length"), ("b", b, "length")), st, "stress"),)
-    return Outcome("plate_bending", p["q"] * pi * (a * a - b * b), st, fy, stress.design_factor(fy, st), steps)
+    load = p["q"] * pi * (a * a - b * b)
+    if bad:
+        return _outside(bad, load)
+    case = _CASE_2[(p["outer"], p["inner"])]
+    ins = (("q", p["q"], "stress"), ("a", a, "length"), ("b", b, "length"), ("t", t, "length"))
+    edges = plates.annular_uniform_pressure(p["q"], t, a, b, mat.poisson_m, p["outer"], p["inner"])
+    steps, points = [], []
+    for where, (sr, st) in zip(("inner edge", "outer edge"), edges):
+        for symbol, value in (("σr", sr), ("σt", st)):
+            steps.append(Step(f"{'Radial' if symbol == 'σr' else 'Tangential'} stress at the {where} (thin plate, "
+                              f"Young & Budynas 2002 Table 11.2 case {case})", symbol,
+                              f"6 M/t² of {{q}} on {{a}} x {{b}} x {{t}}, outer edge {p['outer']}, inner {p['inner']}",
+                              ins, value, "stress"))
+        points.append((where, sr, st))
+    return _shear_outcome(points, load, mat, steps, "tresca")
 
 
 def _plate_eccentric(p, s, mat) -> Outcome:
+    """App. IV's sign: the load W (a rod) acts against W' (spread over the plate); at the centre of W's circle."""
+    bad = _plate_range(p, s)
+    if bad:
+        return _outside(bad, p["W"])
     a, t = _plate_geometry(p, s)
-    sr, st = plates.supported_eccentric_and_distributed(p["W"], p["W_total"], t, a, p["p"], p["r0"],
-                                                         mat.poisson_m, p["a_t"])
+    m = mat.poisson_m
+    r0, steps = _load_radius(p, t)
     ins = (("W", p["W"], "force"), ("W'", p["W_total"], "force"), ("t", t, "length"), ("a", a, "length"),
-           ("p", p["p"], "length"), ("r0", p["r0"], "length"))
-    ecc = "-3 {W} / (2π m {t}²) [m + (m+1) ln(({a}-{p})/{r0}) - (m-1) {r0}²/(4({a}-{p})²)]"
-    steps = [Step("Radial stress, eccentric + distributed load (Roark 1954 p. 194-195)", "σr",
-                  ecc + " + 3 {W'} / (8π m {t}²) (3m+1)(1 - {p}²/{a}²)", ins, sr, "stress"),
-             Step("Tangential stress, eccentric + distributed load (Roark 1954 p. 194-195)", "σt",
-                  ecc + " + 3 {W'} / (8π m {t}²) [(3m+1) - (m+3) {p}²/a²]", ins, st, "stress")]
-    return _shear_outcome(sr, st, p["W"], mat, steps, p["theory"])
+           ("p", p["p"], "length"), ("r0", r0, "length"))
+    if p["formula"] == "app_iv":
+        e = plates.app_iv_eccentric_load(p["W"], t, a, p["p"], r0, m)
+        er, et = e, e
+        steps.append(Step("Stress due to the eccentric load, as a central load on a plate of radius a - p "
+                          "(App. IV; Roark 1954 p. 194-195)", "σW",
+                          "3 {W} / (2π m {t}²) [m + (m+1) ln(({a}-{p})/{r0}) - (m-1) {r0}²/(4({a}-{p})²)]",
+                          ins, e, "stress"))
+    else:
+        er, et = plates.supported_eccentric_load(p["W"], t, a, p["p"], r0, m)
+        for symbol, value in (("σW,r", er), ("σW,t", et)):
+            steps.append(Step(f"{'Radial' if symbol == 'σW,r' else 'Tangential'} stress due to the eccentric load "
+                              "(thin plate, supported edge: Green's function over the load circle)", symbol,
+                              "6 M/t² of {W} over {r0} at {p} on a plate {a} x {t}", ins, value, "stress"))
+    a_t = p["a_t"] or a
+    dr, dt = plates.supported_uniform_load(p["W_total"], t, a, p["p"], m, a_t)
+    steps.append(Step("Radial stress due to the distributed load (Roark 1954 p. 194)", "σW',r",
+                      "3 {W'} / (8π m {t}²) (3m+1)(1 - {p}²/{a}²)", ins, dr, "stress"))
+    steps.append(Step("Tangential stress due to the distributed load (Roark 1954 p. 194)", "σW',t",
+                      "3 {W'} / (8π m {t}²) [(3m+1) - (m+3) {p}²/{at}²]", ins + (("at", a_t, "length"),), dt, "stress"))
+    sr, st = dr - er, dt - et
+    steps.append(Step("Radial stress at the load", "σr", "{σW',r} - {σW,r}",
+                      (("σW',r", dr, "stress"), ("σW,r", er, "stress")), sr, "stress"))
+    steps.append(Step("Tangential stress at the load", "σt", "{σW',t} - {σW,t}",
+                      (("σW',t", dt, "stress"), ("σW,t", et, "stress")), st, "stress"))
+    return _shear_outcome([("at the load", sr, st)], p["W"], mat, steps, p["theory"])
 
 
 # kind -> (reader of config parameters, evaluator, material properties it needs)
@@ -486,12 +645,28 @@ KINDS: dict[str, tuple[Callable[[Node, Rules], dict], Callable[[dict, Section, M
     "pin_double_shear": (_read_double_shear, _double_shear, ("yield_strength",)),
     "ring_bending": (_read_ring, _ring, ("yield_strength",)),
     "cone_tension": (_read_cone, _cone, ("yield_strength",)),
-    "plate_fixed_center_load": (_read_plate, _plate_fixed, ("yield_strength", "poisson_m")),
-    "plate_supported_center_load": (_read_plate, _plate_supported, ("yield_strength", "poisson_m")),
-    "plate_fixed_center_moment_and_load": (_read_plate_moment, _plate_moment, ("yield_strength", "poisson_m")),
-    "plate_annular_uniform_pressure": (_read_annular, _plate_annular, ("yield_strength", "poisson_m")),
+    "plate_fixed_center_load": (_read_plate, _plate_center("fixed"), ("yield_strength", "poisson_m")),
+    "plate_supported_center_load": (_read_plate, _plate_center("supported"), ("yield_strength", "poisson_m")),
+    "plate_fixed_center_moment_and_load": (_read_plate_moment("fixed"), _plate_moment, ("yield_strength", "poisson_m")),
+    "plate_supported_center_moment_and_load": (_read_plate_moment("supported"), _plate_moment,
+                                               ("yield_strength", "poisson_m")),
+    "plate_annular_outer_supported_uniform_pressure": (_read_annular("supported", "free"), _plate_annular,
+                                                       ("yield_strength", "poisson_m")),
+    "plate_annular_outer_fixed_uniform_pressure": (_read_annular("fixed", "free"), _plate_annular,
+                                                   ("yield_strength", "poisson_m")),
+    "plate_annular_inner_supported_uniform_pressure": (_read_annular("free", "supported"), _plate_annular,
+                                                       ("yield_strength", "poisson_m")),
+    "plate_annular_inner_fixed_uniform_pressure": (_read_annular("free", "fixed"), _plate_annular,
+                                                   ("yield_strength", "poisson_m")),
     "plate_supported_eccentric_and_distributed": (_read_eccentric, _plate_eccentric, ("yield_strength", "poisson_m")),
 }
+# retired kind -> what to write instead
+RETIRED = {"plate_annular_uniform_pressure": (
+    ("plate_annular_inner_supported_uniform_pressure (what this name computed: inner edge supported, outer edge "
+     "free; App. IV's peg-leg absorber cap), plate_annular_outer_supported_uniform_pressure, "
+     "plate_annular_outer_fixed_uniform_pressure or plate_annular_inner_fixed_uniform_pressure"),
+    ("plate_annular_uniform_pressure, retired: documented as outer edge supported, it computed the inner-supported "
+     "plate"))}
 
 
 _PLATE = {"radius": "diameter", "thickness": "thickness"}
@@ -503,7 +678,9 @@ STANDS_IN: dict[str, dict[str, str]] = {
     "plate_fixed_center_load": _PLATE,
     "plate_supported_center_load": _PLATE,
     "plate_fixed_center_moment_and_load": _PLATE,
-    "plate_annular_uniform_pressure": {**_PLATE, "inner_radius": "inner_diameter"},
+    "plate_supported_center_moment_and_load": _PLATE,
+    **{f"plate_annular_{edge}_uniform_pressure": {**_PLATE, "inner_radius": "inner_diameter"}
+       for edge in ("outer_supported", "outer_fixed", "inner_supported", "inner_fixed")},
     "plate_supported_eccentric_and_distributed": {**_PLATE, "radius_tangential": "diameter"},
 }
 
@@ -514,8 +691,8 @@ def _length(x: float) -> str:
 
 def out_of_range(check: Check, section: Section, material: Material) -> tuple[str, str, str] | None:
     """(key, expected, found) when a check's geometry leaves its formula's domain: a local-buckling wall of the
-    tube's outside radius or more, or outside its formula's r/t range; a ring of R/c below 2; a plate load
-    circle or inner radius not below the plate radius. A key "section.NAME" is the item section's own."""
+    tube's outside radius or more, or outside its formula's r/t range; a ring of R/c below 2; a plate outside
+    its formula's range (_plate_range). A key "section.NAME" is the item section's own."""
     p = check.params
     if check.kind == "local_buckling":
         r = section.outside_diameter / 2           # the section's own wall is checked where it is read
@@ -533,15 +710,17 @@ def out_of_range(check: Check, section: Section, material: Material) -> tuple[st
                         "(the straight-beam ring holds for R/c >= 2, R = span / 2)")
             return "span", expected, _length(p["span"])
     elif check.kind.startswith("plate_"):
-        a, _ = _plate_geometry(p, section)
-        for key, name, words in (("load_radius", "r0", "a load radius"), ("inner_radius", "b", "an inner radius")):
-            if p.get(name) is not None and p[name] >= a:
-                return key, f"{words} below the plate radius {_length(a)}", _length(p[name])
+        try:
+            return _plate_range(p, section)
+        except (KeyError, AttributeError, TypeError):     # a dimension missing: the evaluation names it
+            return None
     return None
 
 
 def read_check(node: Node, rules: Rules = RULES[DEFAULT_RULES]) -> Check:
     """A check table; keys it does not give take their formula from `rules`."""
+    if node.raw("kind", None) in RETIRED:
+        raise node.error("kind", *RETIRED[node.raw("kind")])
     kind = node.string("kind", choices=tuple(KINDS))
     params = KINDS[kind][0](node, rules)
     note = node.string("note", "")

@@ -2,10 +2,11 @@
 
 "current" (the default) takes Johnson's parabola below the Euler transition (Bruhn 1973 C2.4), the SP-8007
 thin-wall knockdown for local buckling (NASA SP-8007 1968 eq. 4), Roark's equivalent load radius on plates
-(Roark 1954 p. 194) and the Tresca criterion on plates (the more conservative of the two classical yield
-criteria for ductile metals, Young & Budynas 2002 §3.7). "app_iv" is AFFDL-TR-66-33 App. IV as printed:
-Euler only, 0.4 E t / D, the nominal load radius and (sigma_r + sigma_t) / 2 against Fcy / 2. A check's own
-`formula`, `theory` or `equivalent_radius` key overrides its rule set.
+(Roark 1954 p. 194), the Tresca criterion on plates (the more conservative of the two classical yield
+criteria for ductile metals, Young & Budynas 2002 §3.7) and thin-plate solutions for the hub couple and the
+eccentric load. "app_iv" is AFFDL-TR-66-33 App. IV as printed: Euler only, 0.4 E t / D, the nominal load
+radius, (sigma_r + sigma_t) / 2 against Fcy / 2 and Roark's 1954 hub-couple and eccentric-load formulas. A
+check's own `formula`, `theory` or `equivalent_radius` key overrides its rule set.
 """
 
 from __future__ import annotations
@@ -19,8 +20,9 @@ class Rules:
     local: str                # local_buckling `formula`: "sp8007" | "app_iv"
     plate: str                # plate `theory`: "tresca" | "von_mises" | "app_iv"
     equivalent_radius: bool   # plate `equivalent_radius`
+    plate_formula: str        # hub-couple and eccentric plate `formula`: "thin_plate" | "app_iv"
 
 
-RULES = {"current": Rules("johnson_euler", "sp8007", "tresca", True),
-         "app_iv": Rules("euler", "app_iv", "app_iv", False)}
+RULES = {"current": Rules("johnson_euler", "sp8007", "tresca", True, "thin_plate"),
+         "app_iv": Rules("euler", "app_iv", "app_iv", False, "app_iv")}
 DEFAULT_RULES = "current"
