@@ -51,7 +51,7 @@ material = "7178-t6"
 section = {{ shape = "plate", diameter = "6 in", thickness = "0.2 in", inner_diameter = "1 in" }}
 {weight}size = {size}
   [[item.check]]
-  kind = "plate_annular_uniform_pressure"
+  kind = "plate_annular_inner_supported_uniform_pressure"
   pressure = "100 psi"
 """)
 
