@@ -269,11 +269,32 @@ def _print_input_warnings() -> None:
     warnings.showwarning = _show
 
 
+def _writable(option: str, path: Path, folder: bool) -> None:
+    """An output path that can be written, checked before any work: `path` a folder (or one to make) when
+    `folder`, else a file in one; the nearest existing ancestor a writable folder."""
+    if path.exists() and path.is_dir() != folder:
+        raise InputError("(command line)", option, "a folder" if folder else "a file path", f"{str(path)!r}, "
+                         + ("a file" if folder else "a folder"))
+    base = path if folder else path.parent
+    existing = next(p for p in (base, *base.parents) if p.exists())
+    if not existing.is_dir() or not os.access(existing, os.W_OK | os.X_OK):
+        raise InputError("(command line)", option, "a path in a writable folder", f"{str(path)!r}: {str(existing)!r} "
+                         + ("is a file" if not existing.is_dir() else "is not writable"))
+
+
+def _check_outputs(args) -> None:
+    for option, folder in (("out", True), ("json", False), ("junit", False)):
+        value = getattr(args, option, None)
+        if value:
+            _writable(f"--{option}", Path(value), folder)
+
+
 def main(argv: list[str] | None = None) -> int:
     args = parser().parse_args(argv)
     try:
         with warnings.catch_warnings(), compile_notice():
             _print_input_warnings()
+            _check_outputs(args)
             return args.run(args)
     except InputError as exc:
         print(f"alightsize: error: {exc}", file=sys.stderr)

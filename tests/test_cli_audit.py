@@ -230,3 +230,23 @@ def test_a_required_factor_below_one_needs_its_override_and_is_reported(tmp_path
     assert "below 1 (allow_below_one): Rod 0.5" in doc["verdict"]
     html = (tmp_path / "d" / "report.html").read_text()
     assert "below 1 (allow_below_one): Rod 0.5" in html.split("Result:")[1].split("</p>")[0]
+
+
+@pytest.mark.parametrize("argv", [
+    ["design", "{cfg}", "--out", "{file}/sub"],
+    ["design", "{cfg}", "--out", "{file}"],
+    ["audit", "{cfg}", "--json", "{file}/a.json"],
+    ["audit", "{cfg}", "--junit", "{tmp}"],
+    ["simulate", "{scene}", "--out", "{file}"],
+    ["scale", "--length", "2", "--mass", "3", "--json", "{file}/s.json"],
+])
+def test_an_output_path_that_cannot_be_written_exits_2_before_any_work(tmp_path, capsys, argv):
+    """--out under a file or naming one, --json or --junit under a file or naming a folder: exit 2 naming the
+    option, before anything is computed or written."""
+    (tmp_path / "f").write_text("x")
+    fill = {"cfg": str(EXAMPLES / "telescoping.toml"), "file": str(tmp_path / "f"), "tmp": str(tmp_path),
+            "scene": str(EXAMPLES / "scenes" / "telescoping_config2.toml")}
+    assert main([a.format(**fill) for a in argv]) == 2
+    err = capsys.readouterr().err
+    assert "--" in err and "Traceback" not in err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["f"]
