@@ -14,6 +14,7 @@ from pathlib import Path
 from alightsize import __version__
 from alightsize.common.errors import InputError, InputWarning
 from alightsize.common.compile_notice import compile_notice
+from alightsize.common.lock import output_folder
 from alightsize.common.resources import data_dir
 
 
@@ -295,7 +296,10 @@ def main(argv: list[str] | None = None) -> int:
         with warnings.catch_warnings(), compile_notice():
             _print_input_warnings()
             _check_outputs(args)
-            return args.run(args)
+            if getattr(args, "out", None) is None:
+                return args.run(args)
+            with output_folder(Path(args.out)):
+                return args.run(args)
     except InputError as exc:
         print(f"alightsize: error: {exc}", file=sys.stderr)
         return 2

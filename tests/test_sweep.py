@@ -341,3 +341,18 @@ def test_column_names_from_user_input_are_quoted_identifiers(tmp_path):
     store.put({"run_id": "r2", "status": "done", name: 2.5})
     assert [r[name] for r in store.rows(["r1", "r2"])] == [1.5, 2.5]
     store.close()
+
+
+def test_a_second_command_on_the_same_output_folder_is_refused(tmp_path, capsys):
+    """A folder another alightsize command is writing (its lock held here) is refused with exit 2, the store
+    untouched; leftovers of an interrupted write are removed by the next command that takes the folder."""
+    from alightsize.common.lock import output_folder
+    out = tmp_path / "out"
+    with output_folder(out):
+        assert main(["sweep", str(_study(tmp_path, 1)), "--out", str(out), "--serial"]) == 2
+        assert "in use by another alightsize process" in capsys.readouterr().err
+        assert list(out.iterdir()) == []
+    (out / "sub").mkdir()
+    (out / "sub" / ".history.parquet.k3j.tmp").write_bytes(b"half")
+    with output_folder(out):
+        assert not (out / "sub" / ".history.parquet.k3j.tmp").exists()
