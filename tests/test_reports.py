@@ -110,3 +110,19 @@ def test_every_check_states_its_margin_of_safety():
         for r, (req, ms) in zip(res.records, shown):
             assert float(req) == pytest.approx(r.required) and float(ms) == pytest.approx(r.margin, abs=0.005)
             assert ms.startswith("-") is (not r.ok)
+
+
+def test_names_with_mathtext_are_drawn_literally(tmp_path):
+    """An item or configuration named with unbalanced mathtext is drawn as written, not parsed (it would raise)."""
+    import io
+    text = (EXAMPLES / "articulated_9.toml").read_text()
+    text = text.replace('configuration = "9"', 'configuration = "$\\\\foo{$"', 1).replace(
+        'name = "Peg Leg Cone"', 'name = "Cone $\\\\alpha{$ and $x$"', 1)
+    cfg = tmp_path / "m.toml"
+    cfg.write_text(text)
+    res = run_design(read_design(cfg))
+    for kind in ("factors", "weights"):
+        fig = res.plot(kind)
+        fig.savefig(io.BytesIO(), format="png")
+        shown = [t.get_text() for t in fig.findobj(lambda a: hasattr(a, "get_text"))]
+        assert any("$\\foo{$" in t.replace("\\$", "$") for t in shown)

@@ -17,6 +17,7 @@ from alightsize_sim.terrain import height
 from alightsize_sim.terrain import pack as pack_terrain
 
 from alightsize.common.atomic import write_atomic
+from alightsize.common.figures import literal
 from alightsize.model.scene_config import SceneConfig
 from alightsize.landings.footprints import features_met, plot_footprints
 from alightsize.landings.shock_spectrum import default_frequencies, srs
@@ -191,7 +192,7 @@ def plots(cfg: SceneConfig, res: Result, out: Path) -> list[Path]:
             axes[k].set_ylabel(f"{label}({k + 1}), {unit}")
             axes[k].grid(alpha=0.3)
         axes[-1].set_xlabel("time, s")
-        fig.suptitle(f"{cfg.title}: {label} (cf. Figs. 33-38)")
+        fig.suptitle(f"{literal(cfg.title)}: {label} (cf. Figs. 33-38)")
         save(fig, name)
     fig, ax = plt.subplots(figsize=(7, 4), layout="constrained")
     kinds = {}                              # cell kind ("rot" for rot1-rot4) -> line style

@@ -7,6 +7,7 @@ from math import isfinite
 
 from matplotlib.figure import Figure
 
+from alightsize.common.figures import literal
 from alightsize.common.units import to_display, unit_label
 
 
@@ -17,7 +18,7 @@ def design_factor_figure(res) -> Figure:
         recs = [r for r in res.records if r.item is item and isfinite(r.outcome.factor)]
         if recs:
             gov = min(recs, key=lambda r: r.outcome.factor)
-            rows.append((item.name, gov.outcome.factor, gov.required, gov.ok))
+            rows.append((literal(item.name), gov.outcome.factor, gov.required, gov.ok))
     fig = Figure(figsize=(7, 0.35 * len(rows) + 1.2), layout="tight")
     ax = fig.subplots()
     names = [r[0] for r in rows][::-1]
@@ -31,7 +32,7 @@ def design_factor_figure(res) -> Figure:
         ax.text(min(v, right) + 0.01, y, f"{v:.2f}", va="center", fontsize=8)
     ax.set_xlabel("governing design factor f = allowable / stress")
     ax.set_xlim(0.8, right + 0.15)
-    ax.set_title(f"Configuration {res.config.configuration}: design factors (dashed: required)")
+    ax.set_title(f"Configuration {literal(res.config.configuration)}: design factors (dashed: required)")
     return fig
 
 
@@ -41,7 +42,7 @@ def weight_figure(res) -> Figure:
     rows = sorted(res.weights, key=lambda w: w.count * w.each)
     fig = Figure(figsize=(7, 0.35 * len(rows) + 1.2), layout="tight")
     ax = fig.subplots()
-    ax.barh([w.label for w in rows], [to_display(w.count * w.each, "mass", system) for w in rows], color="#468")
+    ax.barh([literal(w.label) for w in rows], [to_display(w.count * w.each, "mass", system) for w in rows], color="#468")
     ax.set_xlabel(f"weight per leg ({unit_label('mass', system)})")
-    ax.set_title(f"Configuration {res.config.configuration}: weight breakdown")
+    ax.set_title(f"Configuration {literal(res.config.configuration)}: weight breakdown")
     return fig

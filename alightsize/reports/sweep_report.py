@@ -16,6 +16,7 @@ from openpyxl.styles import Font
 
 from alightsize import __version__
 from alightsize.common.atomic import write_atomic
+from alightsize.common.figures import literal
 from alightsize.landings.criteria import violation_kinds
 from alightsize.reports.rendering import save_workbook, template_env, text_cell
 from alightsize.landings.run_store import RunStore
@@ -152,8 +153,8 @@ def boundary_plot(rows: list[dict], axes: tuple[str, str], path: Path) -> Path:
         z = np.full((len(ys), len(xs)), np.nan)
         z[np.searchsorted(ys, xy[:, 1]), np.searchsorted(xs, xy[:, 0])] = frac
         ax.contour(xs, ys, z, levels=[0.5], colors="k", linewidths=1.2)
-    ax.set_xlabel(f"{axes[0]} ({x_unit})" if x_unit else axes[0])
-    ax.set_ylabel(f"{axes[1]} ({y_unit})" if y_unit else axes[1])
+    ax.set_xlabel(literal(f"{axes[0]} ({x_unit})" if x_unit else axes[0]))
+    ax.set_ylabel(literal(f"{axes[1]} ({y_unit})" if y_unit else axes[1]))
     ax.set_title("Successful runs over two parameters" + (" (line: half successful)" if len(xs) * len(ys) == len(xy) else ""))
     fig.tight_layout()
     write_atomic(path, lambda p: fig.savefig(p, dpi=110, format="png"))
