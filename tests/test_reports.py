@@ -126,3 +126,12 @@ def test_names_with_mathtext_are_drawn_literally(tmp_path):
         fig.savefig(io.BytesIO(), format="png")
         shown = [t.get_text() for t in fig.findobj(lambda a: hasattr(a, "get_text"))]
         assert any("$\\foo{$" in t.replace("\\$", "$") for t in shown)
+
+
+def test_a_file_name_with_backticks_stays_inside_its_code_span(tmp_path):
+    """A config named x`y.toml: the Markdown code span takes a longer fence, so the name cannot close it."""
+    cfg = tmp_path / "x`y.toml"
+    cfg.write_text((EXAMPLES / "articulated_9.toml").read_text())
+    md = render_markdown(run_design(read_design(cfg)))
+    head = md.splitlines()[2]
+    assert "from ``x`y.toml`` ·" in head and head.count("`") == 5

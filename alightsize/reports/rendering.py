@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import datetime
 import io
+import re
 import zipfile
 from pathlib import Path
 
@@ -22,11 +23,21 @@ def _md_escape(text: str) -> str:
     return out
 
 
+def _md_code(text: str) -> str:
+    """User text as a Markdown code span that it cannot close: a fence of one backtick more than its longest
+    run, padded with a space where it starts or ends with one (CommonMark 0.31 §6.1)."""
+    out = str(text).replace("\n", " ")
+    fence = "`" * (max((len(run) for run in re.findall("`+", out)), default=0) + 1)
+    pad = " " if out[:1] == "`" or out[-1:] == "`" else ""
+    return f"{fence}{pad}{out}{pad}{fence}"
+
+
 def template_env(autoescape: bool) -> jinja2.Environment:
     env = jinja2.Environment(loader=jinja2.FileSystemLoader(str(data_dir("templates"))),
                              autoescape=autoescape, undefined=jinja2.StrictUndefined,
                              trim_blocks=True, lstrip_blocks=True, keep_trailing_newline=True)
     env.filters["md"] = _md_escape
+    env.filters["code"] = _md_code
     return env
 
 
