@@ -352,7 +352,7 @@ def test_a_second_command_on_the_same_output_folder_is_refused(tmp_path, capsys)
         assert main(["sweep", str(_study(tmp_path, 1)), "--out", str(out), "--serial"]) == 2
         assert "in use by another alightsize process" in capsys.readouterr().err
         assert list(out.iterdir()) == []
-    (out / "sub").mkdir()
+    (out / "sub").mkdir(parents=True)          # (the lock removed the folder it made and left empty)
     (out / "sub" / ".history.parquet.k3j.tmp").write_bytes(b"half")
     with output_folder(out):
         assert not (out / "sub" / ".history.parquet.k3j.tmp").exists()

@@ -15,7 +15,9 @@ from alightsize.common.errors import InputError
 def output_folder(path: Path) -> Iterator[Path]:
     """Hold `path` (made if missing) for this process while the command runs: a second command on the same
     folder is refused at once (flock on the folder, released when the process ends, even by kill -9); the
-    temp files an interrupted write left (`.NAME.*.tmp`, alightsize.common.atomic) are removed first."""
+    temp files an interrupted write left (`.NAME.*.tmp`, alightsize.common.atomic) are removed first. A folder
+    made here and left empty (the command refused its input) is removed again."""
+    made = not path.exists()
     path.mkdir(parents=True, exist_ok=True)
     fd = os.open(path, os.O_RDONLY)
     try:
@@ -29,3 +31,5 @@ def output_folder(path: Path) -> Iterator[Path]:
         yield path
     finally:
         os.close(fd)
+        if made and not any(path.iterdir()):
+            path.rmdir()
