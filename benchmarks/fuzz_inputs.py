@@ -245,6 +245,12 @@ def read(kind: str, path: Path) -> Any:
     raise ValueError(kind)
 
 
+# Infinities a result may hold by design: a check without stress has design factor and margin inf
+# (checks/audit.py). A study's run overrides and parameters are its values as written, read with the scene.
+INFINITE_OK = {"factor", "margin"}
+RAW = {"overrides", "params"}
+
+
 def nonfinite(obj: Any, where: str = "", seen: set | None = None, depth: int = 0) -> list[str]:
     """Attribute paths of the NaN or infinite numbers in a reader's result (raw TOML kept in Nodes skipped)."""
     import numpy as np
@@ -255,7 +261,8 @@ def nonfinite(obj: Any, where: str = "", seen: set | None = None, depth: int = 0
             dataclasses.is_dataclass(obj):
         return []
     if isinstance(obj, (float, np.floating)):
-        return [] if math.isfinite(obj) else [where or "."]
+        ok = math.isfinite(obj) or obj == math.inf and where.rpartition(".")[2] in INFINITE_OK
+        return [] if ok else [where or "."]
     if isinstance(obj, np.ndarray):
         return [where] if obj.dtype.kind in "fc" and not np.isfinite(obj).all() else []
     seen.add(id(obj))
@@ -269,6 +276,8 @@ def nonfinite(obj: Any, where: str = "", seen: set | None = None, depth: int = 0
         return []
     out = []
     for name, v in items:
+        if name in RAW:
+            continue
         out += nonfinite(v, f"{where}.{name}" if not name.startswith("[") else where + name, seen, depth + 1)
     return out
 
