@@ -248,8 +248,8 @@ def _loads_config(root: Node, path: Path, name: str, scene: SceneConfig, units: 
            "lower": {k: cells[legs["lower"]][k] for k in ("deflection", "force")}}
     if "length_scale" in legs:
         own["length_scale"] = legs["length_scale"]
-    extra = node.raw("configuration", [])
-    combined = list(node.raw("combined", []))
+    extra = [n.data for n in node.tables("configuration", optional=True)]     # read in full by read_loads below
+    combined = [n.data for n in node.tables("combined", optional=True)]
     if extra and not combined:
         combined.append({"name": ALL_CONFIGURATIONS, "configurations": [c.get("name") for c in extra] + [own_name]})
     data = {"geometry": legs["geometry"], "truss": node.raw("truss"), "configuration": [*extra, own],
