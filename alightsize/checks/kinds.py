@@ -719,8 +719,9 @@ def out_of_range(check: Check, section: Section, material: Material) -> tuple[st
 
 def read_check(node: Node, rules: Rules = RULES[DEFAULT_RULES]) -> Check:
     """A check table; keys it does not give take their formula from `rules`."""
-    if node.raw("kind", None) in RETIRED:
-        raise node.error("kind", *RETIRED[node.raw("kind")])
+    retired = node.raw("kind", None)
+    if isinstance(retired, str) and retired in RETIRED:
+        raise node.error("kind", *RETIRED[retired])
     kind = node.string("kind", choices=tuple(KINDS))
     params = KINDS[kind][0](node, rules)
     note = node.string("note", "")

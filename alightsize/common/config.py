@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import difflib
 import json
-import math
 import re
 import tomllib
 from pathlib import Path
@@ -42,6 +41,7 @@ class Node:
         self._read: set[str] = set()
 
     def key(self, name: str) -> str:
+        name = name if name.strip() else json.dumps(name)     # an empty key as TOML writes it, ""
         return f"{self.path}.{name}" if self.path else name
 
     def set_path(self, dotted: str, value: Any) -> None:
@@ -115,8 +115,10 @@ class Node:
             return default
         if isinstance(value, bool) or not isinstance(value, (int, float)):
             raise self.error(name, "a number", _describe(value))
-        if not math.isfinite(value) or (positive and value <= 0):
-            raise self.error(name, "a finite positive number" if positive else "a finite number", _describe(value))
+        low, high, _ = units.RANGES["dimensionless"]
+        if not (value == 0 or low <= abs(value) <= high) or (positive and value <= 0):   # NaN fails too
+            raise self.error(name, ("a positive number" if positive else "a number")
+                             + f" of magnitude {low:g} to {high:g}" + ("" if positive else " (or 0)"), _describe(value))
         return float(value)
 
     def integer(self, name: str, default: Any = _MISSING, minimum: int = 1, maximum: int = 1_000_000) -> int:
@@ -191,6 +193,22 @@ def _unknown(key: str, known) -> str:
     return f"unknown key {key!r}" + (f" (did you mean {close!r}?)" if close else "")
 
 
+def is_file(path: Path) -> bool:
+    """Whether `path` is an existing file; False also for a path the system refuses (too long, a NUL byte)."""
+    try:
+        return path.is_file()
+    except (OSError, ValueError):
+        return False
+
+
+def is_dir(path: Path) -> bool:
+    """Whether `path` is an existing folder; False also for a path the system refuses."""
+    try:
+        return path.is_dir()
+    except (OSError, ValueError):
+        return False
+
+
 def load_toml(path: str | Path) -> Node:
     """Read a TOML file into a root Node; a missing or malformed file is an InputError."""
     path = Path(path)
@@ -204,6 +222,8 @@ def load_toml(path: str | Path) -> Node:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise InputError(str(path), "", "valid TOML", f"a syntax error: {exc}") from None
+    except ValueError as exc:         # an integer of more than 4300 digits (Python's int-from-text limit)
+        raise InputError(str(path), "", "valid TOML", f"a value Python cannot read: {exc}") from None
     except RecursionError:
         raise InputError(str(path), "", "TOML nested less deeply than Python's recursion limit",
                          "arrays or inline tables nested deeper") from None

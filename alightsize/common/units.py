@@ -75,7 +75,7 @@ def parse(text: str | float | int, dim: str) -> float:
         raise ValueError(f"a quantity in {example(dim)}")
     if isinstance(text, (int, float)):
         if dim == "dimensionless":
-            return float(text)
+            return float(_in_range(text, dim))         # an integer too large for a float is out of range too
         raise ValueError(f"a number with a unit of {dim}, e.g. \"{example(dim)}\"")
     return _parse_text(str(text).strip(), dim)
 
@@ -118,7 +118,7 @@ def _parse_text(text: str, dim: str) -> float:
     return _in_range(float(q.to_base_units().magnitude), dim)
 
 
-def _in_range(value: float, dim: str) -> float:
+def _in_range(value: float | int, dim: str) -> float | int:
     """`value` (SI) when zero or of a magnitude within RANGES[dim]; else ValueError saying the range."""
     low, high, unit = RANGES[dim]
     if value != 0 and not low <= abs(value) <= high:          # NaN fails the comparison too

@@ -59,11 +59,15 @@ class Criteria:
         return out
 
 
+LIMIT_MAX = 1e6     # g or g/s: far above any structure's (crewed limits are 10-40 g, 1000 g/s)
+
+
 def _triple(node: Node, key: str) -> tuple[float, float, float]:
     v = node.raw(key)
     if not (isinstance(v, list) and len(v) == 3 and all(isinstance(x, (int, float)) and not isinstance(x, bool)
-                                                       and x > 0 for x in v)):
-        raise node.error(key, "three positive limits, one per body axis (1, 2, 3 = roll axis)", repr(v))
+                                                       and 0 < x <= LIMIT_MAX for x in v)):
+        raise node.error(key, f"three limits from above 0 to {LIMIT_MAX:g}, one per body axis (1, 2, 3 = roll axis)",
+                         repr(v))
     return tuple(float(x) for x in v)
 
 

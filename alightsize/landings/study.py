@@ -31,7 +31,7 @@ from pathlib import Path
 import numpy as np
 
 from alightsize import __version__
-from alightsize.common.config import SEED_MAX, Node, load_toml
+from alightsize.common.config import SEED_MAX, Node, is_file, load_toml
 from alightsize.landings.dispersions import Dispersion, read_dispersion
 from alightsize.common.errors import InputError
 from alightsize.landings.criteria import Criteria, read_criteria
@@ -96,11 +96,13 @@ def _table_points(path: Path, runs_node: Node, scenes: dict, compare: Node | Non
     """(id, scene key, overrides, params, reference) per row of the CSV run table."""
     runs_node.allow(("table", "id", "scene", "set", "choose"))
     table = path.parent / runs_node.string("table")
-    if not table.is_file():
+    if not is_file(table):
         raise runs_node.error("table", "a CSV run table (relative to the study)", f"{str(table)!r}: no such file")
     id_col, scene_col = runs_node.string("id", "run"), runs_node.string("scene", "scene")
     setters = runs_node.table("set", optional=True)
     choose = runs_node.table("choose", optional=True)
+    chooser = {col: {o: opts.table(o).data for o in opts.data}       # column -> its value -> scene overrides
+               for col, opts in ((c, choose.table(c)) for c in (choose.data if choose else ()))}
     ref_col = compare.string("column") if compare else None
     try:
         with open(table, newline="", encoding="utf-8") as fh:
@@ -116,7 +118,7 @@ def _table_points(path: Path, runs_node: Node, scenes: dict, compare: Node | Non
         if row[scene_col] not in scenes:
             raise InputError(str(table), f"{where}, {scene_col}", f"one of {sorted(scenes)}", repr(row[scene_col]))
         over = {k: _fill(v, row, setters, k) for k, v in (setters.data.items() if setters else ())}
-        for col, options in (choose.data.items() if choose else ()):
+        for col, options in chooser.items():
             if row.get(col) not in options:
                 raise InputError(str(table), f"{where}, {col}", f"one of {sorted(options)}", repr(row.get(col)))
             over.update(options[row[col]])
@@ -185,7 +187,7 @@ def read_study(path: str | Path) -> Study:
         if not RUN_ID.fullmatch(k):
             raise InputError(str(path), f"scenes.{json.dumps(k)}", "a scene key of " + RUN_ID_RULE, repr(k))
     for k, f in scenes.items():
-        if not f.is_file():
+        if not is_file(f):
             raise scenes_node.error(k, "the path of a scene TOML (relative to the study)", f"{str(f)!r}: no such file")
     scenes_node.allow(tuple(scenes))
     runs_node, grid = root.table("runs", optional=True), root.table("grid", optional=True)

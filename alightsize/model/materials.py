@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from alightsize.common.config import Node, load_toml
+from alightsize.common.config import Node, is_dir, is_file, load_toml
 from alightsize.common.errors import InputError
 from alightsize.common.resources import data_dir
 
@@ -50,7 +50,7 @@ def material_paths(node: Node, key: str, base: Path) -> list[Path]:
     out = []
     for text in node.strings(key, []):
         path = base / text
-        if not text.strip() or not (path.suffix == ".toml" and path.is_file() or path.is_dir()):
+        if not text.strip() or not (path.suffix == ".toml" and is_file(path) or is_dir(path)):
             raise node.error(key, "paths of material files (.toml) or folders of them, relative to this file",
                              repr(text))
         out.append(path)

@@ -21,7 +21,7 @@ from alightsize_sim.articulated_leg import ArticulatedLeg
 from alightsize_sim.telescoping_leg import TelescopingLeg
 from alightsize_sim.terrain import Box, HeightField, Hemisphere, Step, Terrain
 
-from alightsize.common.config import Node, load_toml
+from alightsize.common.config import Node, is_file, load_toml
 from alightsize.model.gravity import read_gravity
 from alightsize.model.legs import LENGTHS, read_curve, read_geometry
 from alightsize.model.soils import find_soil
@@ -127,8 +127,8 @@ def _legs(node: Node, cells: dict[str, Node]) -> list[dict]:
     small = node.boolean("small_angle", False)
     node.string("note", "")
     node.finish()
-    if lever >= rho:
-        raise node.error("pad_lever", f"a pad lever shorter than the leg ({rho:.4g} m)", f"{lever:.4g} m")
+    if not 0 <= lever < rho:
+        raise node.error("pad_lever", f"a pad lever from 0 to less than the leg ({rho:.4g} m)", f"{lever:.4g} m")
     legs = []
     for i in range(n):
         az = az0 + 2 * np.pi * i / n
@@ -286,7 +286,7 @@ def load_scene_toml(path: Path, depth: int = 0) -> Node:
         return root
     base = head["base"]
     base_path = path.parent / base if isinstance(base, str) else None
-    if base_path is None or not base_path.is_file():
+    if base_path is None or not is_file(base_path):
         raise root.error("scene.base", "the path of a scene TOML (relative to this one)", repr(base))
     if depth >= MAX_BASES:
         raise root.error("scene.base", f"at most {MAX_BASES} nested bases", "a longer chain (a cycle?)")

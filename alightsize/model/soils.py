@@ -8,12 +8,13 @@ from pathlib import Path
 
 from alightsize_sim.soil import Soil
 
-from alightsize.common.config import Node, load_toml
+from alightsize.common.config import Node, is_file, load_toml
 from alightsize.common.resources import data_dir
 
 _UNITS = {"k_c": "N/m^(n+1)", "k_phi": "N/m^(n+2)", "c": "Pa", "gamma": "N/m^3"}   # SI base unit of each key
 _PREFIX = {"": 1.0, "k": 1e3, "M": 1e6}
 N_MAX = 3.0              # sinkage exponent: Bekker fits of real soils lie from 0 to about 1.6 (Wong 2008 Ch. 2)
+VALUE_RANGE = (1e-6, 1e12)   # k_c, k_phi, c, gamma in SI, or 0: every soil's (gamma: 1e3-3e4 N/m^3) with room
 PHI_MAX_DEG = 60.0       # friction angle: soils lie below about 50 deg; tan^2(45 + phi/2) grows without bound
 
 
@@ -21,16 +22,18 @@ def _quantity(node: Node, key: str) -> float:
     """A value as the file states it, "NUMBER UNIT" with the key's SI unit, optionally prefixed k or M (the
     unit of k_c and k_phi depends on n, so it is spelled with n)."""
     text = node.raw(key)
-    expected = f'a value like "1.4 k{_UNITS[key]}" (prefix k or M allowed)'
+    low, high = VALUE_RANGE
+    expected = f'a value like "1.4 k{_UNITS[key]}" (prefix k or M allowed), 0 or {low:g} to {high:g} {_UNITS[key]}'
     try:
         number, unit = str(text).split(maxsplit=1)
         value = float(number)
     except ValueError:
         raise node.error(key, expected, repr(text)) from None
     prefix = unit[: len(unit) - len(_UNITS[key])]
-    if not unit.endswith(_UNITS[key]) or prefix not in _PREFIX or not math.isfinite(value) or value < 0:
+    si = value * _PREFIX.get(prefix, math.nan)
+    if not unit.endswith(_UNITS[key]) or not (si == 0 or low <= si <= high):      # NaN fails too
         raise node.error(key, expected, repr(text))
-    return value * _PREFIX[prefix]
+    return si
 
 
 def read_soil(path: str | Path) -> Soil:
@@ -67,6 +70,6 @@ def find_soil(node: Node, key: str, base: Path) -> Soil:
     if name in presets:
         return presets[name]
     path = base / name
-    if not path.is_file():
+    if not is_file(path):
         raise node.error(key, "a shipped soil (" + ", ".join(sorted(presets)) + ") or a soil file's path", repr(name))
     return read_soil(path)

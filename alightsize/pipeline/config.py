@@ -7,7 +7,7 @@ import copy
 from dataclasses import dataclass
 from pathlib import Path
 
-from alightsize.common.config import Node, load_toml
+from alightsize.common.config import Node, is_file, load_toml
 from alightsize.checks.rules import DEFAULT_RULES, RULES
 from alightsize.loads.config import LoadsConfig, read_loads
 from alightsize.loads.quasi_static import LoadReference, LoadsResult, attach, run_loads, validate_references
@@ -111,7 +111,7 @@ def _loads_config(root: Node, path: Path) -> LoadsConfig | None:
         return None
     file = path.parent / node.string("file")
     node.finish()
-    if not file.exists():
+    if not is_file(file):
         raise node.error("file", "the path of an existing loads config", str(file))
     return read_loads(file)
 

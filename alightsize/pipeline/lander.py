@@ -99,13 +99,12 @@ def _range(node: Node, key: str, dim: str, default: tuple[float, float] | None) 
     if isinstance(raw, list):
         if len(raw) != 2:
             raise node.error(key, "a value or a [low, high] range", repr(raw))
-        lo, hi = (node.parse_quantity(f"{key}[{i}]", v, dim, positive=False) if dim else float(v)
-                  for i, v in enumerate(raw))
+        lo, hi = (node.parse_quantity(f"{key}[{i}]", v, dim, positive=False) for i, v in enumerate(raw))
     else:
-        lo = hi = node.parse_quantity(key, raw, dim, positive=False) if dim else float(raw)
+        lo = hi = node.parse_quantity(key, raw, dim, positive=False)
     if lo < 0 or hi < lo:
         raise node.error(key, "0 <= low <= high", repr(raw))
-    return lo, hi
+    return lo + 0.0, hi + 0.0          # "-0 m/s" as 0 (numpy's uniform refuses a high of -0.0 over a low of 0.0)
 
 
 def _signed(node: Node, key: str, limit: float) -> tuple[float, float]:
@@ -141,7 +140,7 @@ def _envelope(node: Node) -> Envelope:
     rate = node.quantity("roll_rate", "angular_velocity", 0.0, positive=False) if node.has("roll_rate") else 0.0
     if rate < 0:
         raise node.error("roll_rate", "a largest magnitude (either sign is landed)", "a negative value")
-    friction = _range(node, "friction", "", None)
+    friction = _range(node, "friction", "dimensionless", None)
     node.string("note", "")
     node.finish()
     return Envelope(vertical, horizontal, slope, incl, rate, friction, heading)
@@ -249,8 +248,8 @@ def _loads_config(root: Node, path: Path, name: str, scene: SceneConfig, units: 
            "lower": {k: cells[legs["lower"]][k] for k in ("deflection", "force")}}
     if "length_scale" in legs:
         own["length_scale"] = legs["length_scale"]
-    extra = node.raw("configuration", [])
-    combined = list(node.raw("combined", []))
+    extra = [n.data for n in node.tables("configuration", optional=True)]     # read in full by read_loads below
+    combined = [n.data for n in node.tables("combined", optional=True)]
     if extra and not combined:
         combined.append({"name": ALL_CONFIGURATIONS, "configurations": [c.get("name") for c in extra] + [own_name]})
     data = {"geometry": legs["geometry"], "truss": node.raw("truss"), "configuration": [*extra, own],

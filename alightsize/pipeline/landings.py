@@ -24,7 +24,7 @@ from math import degrees, radians
 from pathlib import Path
 from typing import Callable
 
-from alightsize.common.config import Node
+from alightsize.common.config import Node, is_file
 from alightsize.common.errors import InputError
 from alightsize.loads.config import LoadsConfig
 from alightsize.loads.histories import dynamic_envelope
@@ -162,7 +162,7 @@ def read_landing_spec(node: Node, design: Path, loads: LoadsConfig | None) -> La
     for n in names:
         if n not in known:
             raise node.error("envelopes", "names of envelopes of the [loads] file (" + ", ".join(known) + ")", repr(n))
-    if not path.is_file():
+    if not is_file(path):
         raise node.error("study", "the path of a study TOML (relative to the design config)", f"{str(path)!r}: no such file")
     study = read_study(path)
     if role == "criteria" and study.criteria is None:

@@ -115,7 +115,8 @@ def member_item(node: Node, name: str, kind: str, leg: TelescopingLeg | None, en
         item["length"] = _si(leg.length - leg.pad_lever if name == "lower_tube" else leg.pad_lever, "m")
     if "weight" not in item and "section" in node.data:
         shape = node.data["section"].get("shape") if isinstance(node.data["section"], dict) else None
-        default = {"tube": {"method": "tube"}, "plate": {"method": "disc"}}.get(shape)
+        default = {"tube": {"method": "tube"}, "plate": {"method": "disc"}}.get(shape) if isinstance(shape, str) \
+            else None        # any other shape: the section reader names it
         if default and (shape != "tube" or "length" in item):
             item["weight"] = default
     return {"name": name, **item, "check": checks}

@@ -1,0 +1,58 @@
+"""Property: an input reader given one mutation of a shipped input file (benchmarks/fuzz_inputs.py: type, sign,
+magnitude, unit, nesting, names, deletion, misspelling) returns a result without a NaN or infinity its
+unmutated file lacks, or raises an InputError naming a key (or the file, for a file-level error); never
+another exception (the CLI's exit 3, a bug)."""
+
+import importlib.util
+import shutil
+import tomllib
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+ROOT = Path(__file__).resolve().parent.parent
+_spec = importlib.util.spec_from_file_location("fuzz_inputs", ROOT / "benchmarks" / "fuzz_inputs.py")
+fuzz = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(fuzz)
+
+EXAMPLES_PER_KIND = 300      # 7 kinds: about 2,100 mutated reads, 20 s serially (the benchmark runs 10,000+)
+
+
+class Tree(dict):
+    def __repr__(self) -> str:           # a failing example prints the case, not the parsed sources
+        return f"Tree({self['root']})"
+
+
+@pytest.fixture(scope="module")
+def tree(tmp_path_factory) -> Tree:
+    """A copy of examples/ and materials/ (mutants are written beside the files whose relative paths they
+    name), the parsed sources and each file's unmutated non-finite values (inf design factors of unloaded
+    checks are by design)."""
+    root = tmp_path_factory.mktemp("fuzz")
+    for folder in ("examples", "materials"):
+        shutil.copytree(ROOT / folder, root / folder)
+    sources = {rel: tomllib.loads((ROOT / rel).read_text(encoding="utf-8")) for k in fuzz.KINDS for rel in fuzz.files(k)}
+    return Tree(root=root, sources=sources, baseline={})
+
+
+def _target(tree: Tree, rel: str) -> Path:
+    return (tree["root"] / rel).with_name(Path(rel).stem + ".fuzz.toml")
+
+
+@pytest.mark.parametrize("kind", sorted(fuzz.KINDS))
+@settings(max_examples=EXAMPLES_PER_KIND, suppress_health_check=[HealthCheck.function_scoped_fixture,
+                                                                 HealthCheck.too_slow, HealthCheck.data_too_large])
+@given(data=st.data())
+def test_reader_refuses_bad_input_by_key(kind, tree, data):
+    rel = data.draw(st.sampled_from(fuzz.files(kind)), label="file")
+    if rel not in tree["baseline"]:
+        clean = fuzz.run_case(kind, _target(tree, rel), fuzz.dumps(tree["sources"][rel]))
+        assert clean["outcome"] == "ok", clean
+        tree["baseline"][rel] = set(clean["nonfinite"])
+    mutated, key, desc = fuzz.mutate(tree["sources"][rel], lambda options: data.draw(st.sampled_from(options)))
+    res = fuzz.run_case(kind, _target(tree, rel), fuzz.dumps(mutated))
+    assert res["outcome"] in ("ok", "input_error"), (rel, key, desc, res)
+    if res["outcome"] == "ok":
+        assert not set(res["nonfinite"]) - tree["baseline"][rel], (rel, key, desc, res["nonfinite"])
