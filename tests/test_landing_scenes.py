@@ -339,3 +339,15 @@ def test_compiled_code_for_one_leg_kind_takes_that_kind_alone(name, kind):
     assert footpad_slip._contact_force(*args, none, *[None] * 10) is footpad_slip._held
     assert footpad_slip._contact_force(*args, arr, *[None] * 10) is footpad_slip._slipping
     assert footpad_slip._contact_force(*args, pad, *[None] * 10) is footpad_mass.pad_force.py_func
+
+
+@pytest.mark.parametrize("gravity", ['"0 m/s^2"', '"0 g_0"', '"200 m/s^2"'])
+def test_a_gravity_outside_its_range_exits_2_naming_the_key(tmp_path, capsys, gravity):
+    """Zero gravity leaves no down for the tip-over and rest criteria: refused by the documented range
+    (1e-6 to 100 m/s^2), not a ZeroDivisionError in every landing."""
+    text = open(f"{SCENES}/telescoping_config1_run12101.toml").read()
+    bad = tmp_path / "bad.toml"
+    bad.write_text(text.replace("[scene]\n", f"[scene]\ngravity = {gravity}\n", 1))
+    assert main(["simulate", str(bad), "--out", str(tmp_path / "o")]) == 2
+    err = capsys.readouterr().err
+    assert "gravity" in err and "1e-06 to 100" in err and "Traceback" not in err
