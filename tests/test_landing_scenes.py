@@ -351,3 +351,14 @@ def test_a_gravity_outside_its_range_exits_2_naming_the_key(tmp_path, capsys, gr
     assert main(["simulate", str(bad), "--out", str(tmp_path / "o")]) == 2
     err = capsys.readouterr().err
     assert "gravity" in err and "1e-06 to 100" in err and "Traceback" not in err
+
+
+@pytest.mark.parametrize("mass", ['"1e-30 kg"', '"1 g"', '"-1 kg"'])
+def test_a_footpad_lighter_than_its_range_exits_2(tmp_path, capsys, mass):
+    """0 or at least 0.01 kg: a lighter footpad asked for gigabytes of history before (its ringing)."""
+    text = open(f"{SCENES}/articulated_config5_slope35_footpads.toml").read()
+    bad = tmp_path / "bad.toml"
+    bad.write_text(text.replace('footpad_mass = "5 lb"', f"footpad_mass = {mass}").replace(
+        'base = "articulated_config5_slope35.toml"', f'base = "{Path(SCENES).resolve()}/articulated_config5_slope35.toml"'))
+    assert main(["simulate", str(bad), "--out", str(tmp_path / "o")]) == 2
+    assert "legs.footpad_mass" in capsys.readouterr().err
