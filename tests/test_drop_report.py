@@ -7,6 +7,7 @@ from __future__ import annotations
 import copy
 import dataclasses
 import json
+import re
 
 import pytest
 
@@ -114,6 +115,9 @@ def test_fig_102_plot(doc, tmp_path):
     assert plot_energy(doc, tmp_path / "f.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
+_NUMBER = re.compile(r"\d[\d.,]*(e[-+]?\d+)?")
+
+
 def _tight(n: int) -> Drop:
     """Drop n at a tenth of its scene's rtol and atol."""
     cfg = read_scene(DROPS_DIR / f"drop{n:02d}.toml")
@@ -141,6 +145,8 @@ def _mismatches(shipped, ours, tight, path="") -> list[str]:
     if isinstance(shipped, float) and isinstance(ours, float):
         floor = (1e-3 if ".srs_" in path else 1e-6) * abs(ours) + 1e-12
         return [] if abs(shipped - ours) <= 4 * abs(ours - tight) + floor else [f"{path}: {shipped!r} != {ours!r}"]
+    if isinstance(shipped, str) and isinstance(ours, str):      # a reason's wording, without its figures
+        shipped, ours = _NUMBER.sub("#", shipped), _NUMBER.sub("#", ours)
     return [] if shipped == ours else [f"{path}: {shipped!r} != {ours!r}"]
 
 
