@@ -21,7 +21,8 @@ from alightsize.common.errors import InputError
 from alightsize.landings.run_store import TIMING
 from alightsize.landings.study import read_study
 from alightsize.landings.sweep import NEWEST_FIGURE, run_sweep
-from alightsize.reports.sweep_report import wilson, write_results
+from alightsize.landings.probability import wilson_interval
+from alightsize.reports.sweep_report import write_results
 
 ROOT = Path(__file__).resolve().parent.parent
 SCENE = ROOT / "examples" / "affdl-tr-66-33" / "scenes" / "telescoping_config2.toml"
@@ -57,15 +58,6 @@ def _contents(db: Path) -> list[tuple]:
     rows = [tuple((k, v) for k, v in zip(names, r) if k not in TIMING) for r in cur]
     con.close()
     return rows
-
-
-def test_wilson_interval_closed_forms():
-    """Wilson (1927): for k = 0 the upper bound is z^2 / (n + z^2) exactly; the interval is symmetric about
-    the centre (k + z^2/2) / (n + z^2). Round-off tolerance."""
-    z2 = 1.959963984540054 ** 2
-    assert wilson(0, 40) == pytest.approx((0.0, z2 / (40 + z2)), abs=1e-15)
-    lo, hi = wilson(13, 50)
-    assert (lo + hi) / 2 == pytest.approx((13 + z2 / 2) / (50 + z2), rel=1e-14)
 
 
 def test_truncated_normal_draws_have_the_closed_form_mean():
@@ -219,7 +211,7 @@ def test_sweep_command_writes_the_contract_outputs(tmp_path):
     assert sum(v["count"] for v in doc["outcomes"].values()) == 8
     assert set(doc["outcomes"]) >= {"stable", "walking", "time_out", "tipped", "bottomed", "body_contact", "failed"}
     for v in doc["outcomes"].values():
-        assert v["ci95"] == pytest.approx(list(wilson(v["count"], 8)))
+        assert v["ci95"] == pytest.approx(list(wilson_interval(v["count"], 8)))
     html = (tmp_path / "o" / "report.html").read_text()
     assert "&lt;b&gt;MC&lt;/b&gt;" in html and "<b>MC" not in html
     from openpyxl import load_workbook

@@ -5,23 +5,21 @@ successes)."""
 from __future__ import annotations
 
 from dataclasses import dataclass
-from math import sqrt
+
+from scipy.stats import binomtest
 
 from alightsize.landings.criteria import Criteria, violation_kinds
 
-Z95 = 1.959963984540054          # two-sided 95 % normal quantile
 RAN = "the simulation ran to its end"
 
 
-def wilson_interval(k: int, n: int, z: float = Z95) -> tuple[float, float]:
-    """Wilson score interval of a proportion k/n (Wilson 1927, J. Am. Stat. Assoc. 22 p. 209):
-    (p + z²/2n -+ z sqrt(p(1-p)/n + z²/4n²)) / (1 + z²/n); (0, 1) without trials."""
+def wilson_interval(k: int, n: int) -> tuple[float, float]:
+    """95 % Wilson score interval of a proportion k/n (Wilson 1927, J. Am. Stat. Assoc. 22 p. 209), by
+    scipy.stats.binomtest; (0, 1) without trials."""
     if n == 0:
         return 0.0, 1.0
-    p, zz = k / n, z * z
-    d = 1.0 + zz / n
-    centre, half = (p + zz / (2 * n)) / d, z / d * sqrt(p * (1 - p) / n + zz / (4 * n * n))
-    return max(0.0, centre - half), min(1.0, centre + half)
+    ci = binomtest(k, n).proportion_ci(0.95, method="wilson")
+    return float(ci.low), float(ci.high)
 
 
 @dataclass(frozen=True)

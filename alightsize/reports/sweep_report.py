@@ -6,7 +6,6 @@ stability-boundary plot over two parameters; outcomes.json (alightsize.sweep/1),
 from __future__ import annotations
 
 import json
-import math
 from collections import Counter
 from pathlib import Path
 
@@ -18,6 +17,7 @@ from alightsize import __version__
 from alightsize.common.atomic import write_atomic
 from alightsize.common.figures import literal
 from alightsize.landings.criteria import violation_kinds
+from alightsize.landings.probability import wilson_interval
 from alightsize.reports.rendering import save_workbook, template_env, text_cell
 from alightsize.landings.run_store import RunStore
 from alightsize.landings.study import Study
@@ -29,7 +29,6 @@ SCHEMA = "alightsize.sweep/1"
 SYMBOL = {"stable": "X", "bottomed_alpha": "●", "bottomed_psi": "■", "bottomed_rotational_pad": "●",
           "bottomed_axial": "▲", "walking": "+", "time_out": "+", "tipped": "◆", "body_contact": "▼",
           "failed": "F", None: "F"}
-Z95 = 1.959963984540054
 # What each symbol of the outcome matrix means, in the words of its legend.
 MEANING = {"stable": "stable", "bottomed_alpha": "bottomed α", "bottomed_psi": "bottomed ψ",
            "bottomed_rotational_pad": "bottomed rotational pad", "bottomed_axial": "bottomed axial",
@@ -48,16 +47,6 @@ def matrix_legend(doc: dict) -> list[str]:
     return [f"{symbol} {' / '.join(words)}" for symbol, words in by_symbol.items()]
 
 
-def wilson(k: int, n: int) -> tuple[float, float]:
-    """95 % Wilson score interval of a binomial proportion k/n (Wilson 1927)."""
-    if n == 0:
-        return (0.0, 1.0)
-    p, z2 = k / n, Z95 ** 2
-    centre = (p + z2 / (2 * n)) / (1 + z2 / n)
-    half = Z95 * math.sqrt(p * (1 - p) / n + z2 / (4 * n * n)) / (1 + z2 / n)
-    return (max(0.0, centre - half), min(1.0, centre + half))
-
-
 OUTCOMES = ("stable", "walking", "time_out", "tipped", "bottomed", "body_contact", "failed")   # docs/contracts.md
 
 
@@ -67,7 +56,7 @@ def _proportions(values: list, n: int, every: tuple[str, ...] = ()) -> dict:
     counts = Counter(values)
     for k in every:
         counts.setdefault(k, 0)
-    return {str(k): {"count": c, "probability": c / n if n else 0.0, "ci95": list(wilson(c, n))}
+    return {str(k): {"count": c, "probability": c / n if n else 0.0, "ci95": list(wilson_interval(c, n))}
             for k, c in sorted(counts.items(), key=lambda kv: -kv[1])}
 
 
@@ -189,7 +178,7 @@ def results(study: Study, rows: list[dict]) -> dict:
            "outcomes": _proportions([r["outcome"] for r in done], n, OUTCOMES),
            "outcome_classes": _proportions([r["outcome_class"] for r in done], n),
            "successful": _proportions([_success(r) for r in done], n).get("True", {"count": 0, "probability": 0.0,
-                                                                                 "ci95": list(wilson(0, n))}),
+                                                                                 "ci95": list(wilson_interval(0, n))}),
            "statistics": {k: _stats(np.array([r.get(k) for r in done], float))
                           for k in ("peak_xdd1_g", "peak_xdd2_g", "peak_xdd3_g", "max_stroke_m", "closure_rel")},
            "matrix": matrix(study, rows)}
