@@ -319,6 +319,7 @@ def read_lander(path: str | Path, overrides: dict | None = None) -> Lander:
         read_gravity(head, "gravity")             # checked here, so an error names [lander], not the scene
     head.string("note", "")
     head.finish()
+    req = _requirements(root.table("requirements"))  # before the scene, which takes its nominal speeds from it
     scene = read_scene(path, scene_over)
     root.raw("synthesis", None)                   # alightsize.synthesis reads it
     for t in SCENE_TABLES:
@@ -327,7 +328,6 @@ def read_lander(path: str | Path, overrides: dict | None = None) -> Lander:
     units = rep.string("units", "SI", choices=UNIT_SYSTEMS) if rep else "SI"
     if rep:
         rep.finish()
-    req = _requirements(root.table("requirements"))
     loads, envelopes = _loads_config(root, path, name, scene, units)
     mats = library(extra)
     members = root.table("members", optional=True)
