@@ -157,8 +157,7 @@ def _bench(args) -> int:
 
 def _scale(args) -> int:
     from alightsize.common.atomic import write_atomic
-    from alightsize.weights.scaling import table27
-    from alightsize.weights.scaling import SCALE_RANGE
+    from alightsize.weights.scaling import SCALE_RANGE, SCHEMA, table27
     low, high = SCALE_RANGE
     if not all(low <= v <= high for v in (args.length, args.mass)):      # NaN fails both comparisons
         raise InputError("(command line)", "--length/--mass", f"scale factors from {low:g} to {high:g}",
@@ -169,7 +168,7 @@ def _scale(args) -> int:
     for k, v in factors.items():
         print(f"  {k.replace('_', ' '):<{width}}  {v:.4g}")
     if args.json:
-        doc = {"schema": "alightsize.scale/1", "length": args.length, "mass": args.mass, "factors": factors}
+        doc = {"schema": SCHEMA, "length": args.length, "mass": args.mass, "factors": factors}
         write_atomic(args.json, json.dumps(doc, indent=2) + "\n")
     return 0
 
@@ -201,58 +200,99 @@ def _executor_options(p: argparse.ArgumentParser) -> None:
     p.add_argument("--dask-local", type=int, metavar="N", help="start a local Dask cluster of N workers")
 
 
+EXITS = ("exit status: 0 done (and PASS); 1 a check or criterion failed (design, audit, synthesize) or a landing "
+         "failed where success was required; 2 bad input (the message names the file, the key path, what was "
+         "expected and what was found); 3 internal error (please report it with the input)")
+
+# each command: (one-line help, what it reads, does and writes; shown by `alightsize COMMAND --help`)
+COMMANDS = {
+    "design": ("design a landing system from a lander file or a design config",
+               "Reads CONFIG.toml: a lander file ([lander] table; docs/reference/lander.md) or a design config "
+               "([design] table; docs/reference/design.md). Runs the landing cases (stored and resumed in "
+               "OUT/landings/), the load envelopes, every member's checks, the sizing of items with a `size` table, "
+               "the weights and the verdict per criterion. Writes OUT/summary.json (alightsize.design/1), "
+               "report.html, report.md, the workbooks (*.xlsx) and plots. Prints the verdict, the landing nearest to "
+               "failing each criterion, the governing check with its margin of safety and the weight."),
+    "audit": ("design-factor audit of the members as written (for CI)",
+              "Reads CONFIG.toml (a lander file or a design config) and judges every member at the section written "
+              "in the file (no sizing: that is `design`'s). Prints one line per check with its design factor and "
+              "margin; --json writes alightsize.audit/1, --junit a JUnit XML report for CI."),
+    "loads": ("quasi-static member-load envelopes over (alpha, beta, psi) (App. III)",
+              "Reads CONFIG.toml (a loads config, docs/reference/loads.md, or a design config's [loads]). Solves "
+              "the leg's equilibrium at every grid position and writes OUT/max_member_loads.json "
+              "(alightsize.loads/1) and max_member_loads.xlsx."),
+    "simulate": ("one landing of a scene",
+                 "Reads SCENE.toml (docs/reference/scene.md; a lander file gives its nominal landing). Simulates "
+                 "the landing to its outcome and writes OUT/summary.json (alightsize.simulate/1), "
+                 "history.parquet and plots (accelerations, strokes, energy, footprints, shock spectrum)."),
+    "sweep": ("a parametric or Monte Carlo study of landings (resumable run store)",
+              "Reads STUDY.toml (docs/reference/study.md). Runs every landing of the study into OUT/runs.sqlite "
+              "(an interrupted sweep resumes where it stopped) and writes OUT/outcomes.json (alightsize.sweep/1), "
+              "outcomes.xlsx and report.html."),
+    "synthesize": ("the lightest landing system meeting a lander file's requirements",
+                   "Reads LANDER.toml with its [synthesis] table (docs/synthesis.md). Searches the free "
+                   "parameters for the lightest system meeting every criterion, checks the winner on fresh "
+                   "landings, and writes OUT/synthesis.json (alightsize.synthesis/1), report.html, report.md, "
+                   "synthesis.xlsx, plots and OUT/chosen/ (the winner's design report); resumable in OUT."),
+    "bench": ("landing simulator speed against error, with the solve_ivp-style baseline",
+              "Times shipped scenes at several tolerances against a tight reference and a baseline timed in the "
+              "same run; writes OUT/bench.json (alightsize.bench/1) and bench.html."),
+    "scale": ("test-model scaling factors (Table 27)",
+              "Prints the factors that scale a full-size landing to a drop-test model (acceleration scale 1); "
+              "--json writes alightsize.scale/1."),
+    "reports": ("regenerate the reference reports of the shipped examples",
+                "Runs every design config of the 1966 examples and the drop tests and writes their reports "
+                "(the reference reports shipped in reports/)."),
+}
+
+
+def _command(sub, name: str, run, **inputs: str) -> argparse.ArgumentParser:
+    """A sub-command with its help, description and the exit statuses; `inputs` name its positional arguments."""
+    short, long = COMMANDS[name]
+    c = sub.add_parser(name, help=short, description=f"{short[0].upper()}{short[1:]}. {long}", epilog=EXITS)
+    for arg, text in inputs.items():
+        c.add_argument(arg, help=text)
+    c.set_defaults(run=run)
+    return c
+
+
 def parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(prog="alightsize", description=__doc__.split("(")[0].strip())
+    p = argparse.ArgumentParser(prog="alightsize", description=__doc__.split("(")[0].strip(), epilog=EXITS)
     p.add_argument("--version", action="version", version=f"alightsize {__version__}")
     sub = p.add_subparsers(dest="command", required=True)
-    d = sub.add_parser("design", help="stress checks, sizing, weights and reports for a design config")
-    d.add_argument("config")
-    d.add_argument("--out", required=True, help="output folder")
-    d.set_defaults(run=_design)
-    a = sub.add_parser("audit", help="design-factor audit only (for CI)")
-    a.add_argument("config")
+    d = _command(sub, "design", _design, config="a lander file or a design config (TOML)")
+    d.add_argument("--out", required=True, help="output folder (made if missing; landings are resumed from it)")
+    a = _command(sub, "audit", _audit, config="a lander file or a design config (TOML)")
     a.add_argument("--json", help="write the audit as JSON (alightsize.audit/1)")
     a.add_argument("--junit", help="write a JUnit XML report")
-    a.set_defaults(run=_audit)
-    lo = sub.add_parser("loads", help="quasi-static member-load envelopes over (alpha, beta, psi) (App. III)")
-    lo.add_argument("config")
+    lo = _command(sub, "loads", _loads, config="a loads config or a design config (TOML)")
     lo.add_argument("--out", required=True, help="output folder")
     lo.add_argument("--units", choices=("US", "SI"), help="display units of the reports (default: the config's)")
-    lo.set_defaults(run=_loads)
-    si = sub.add_parser("simulate", help="one landing of a scene config")
-    si.add_argument("scene")
+    si = _command(sub, "simulate", _simulate, scene="a scene file or a lander file (TOML)")
     si.add_argument("--out", required=True, help="output folder")
     si.add_argument("--require-success", action="store_true", help="exit 1 when the landing fails numerically")
-    si.set_defaults(run=_simulate)
-    sw = sub.add_parser("sweep", help="a parametric or Monte Carlo study of landings (resumable run store)")
-    sw.add_argument("study")
+    sw = _command(sub, "sweep", _sweep, study="a study file (TOML)")
     _executor_options(sw)
     sw.add_argument("--quiet", action="store_true", help="no progress bar")
     sw.add_argument("--require-success", action="store_true", help="exit 1 when a run failed")
-    sw.set_defaults(run=_sweep)
-    sy = sub.add_parser("synthesize", help="the lightest landing system meeting a lander file's requirements")
-    sy.add_argument("lander")
+    sy = _command(sub, "synthesize", _synthesize, lander="a lander file with a [synthesis] table (TOML)")
     _executor_options(sy)
     sy.add_argument("--start", action="append", default=[], metavar="KEY=VALUE",
                     help="start a free parameter elsewhere than the file's value (repeatable)")
     sy.add_argument("--no-trade", action="store_true", help="skip the trade curves")
-    sy.set_defaults(run=_synthesize)
-    b = sub.add_parser("bench", help="landing simulator speed against error, with the solve_ivp-style baseline")
+    b = _command(sub, "bench", _bench)
     b.add_argument("--out", required=True, help="output folder")
     b.add_argument("--quick", action="store_true", help="fewer scenes and settings")
     b.add_argument("--scene", action="append", metavar="NAME",
                    help="bench only this scene of the set (repeatable; e.g. flat_drop, telescoping_config2)")
-    b.set_defaults(run=_bench)
-    s = sub.add_parser("scale", help="test-model scaling factors (Table 27)")
+    s = _command(sub, "scale", _scale)
     s.add_argument("--length", type=float, required=True, help="length scale, full / model")
     s.add_argument("--mass", type=float, required=True, help="mass scale, full / model")
     s.add_argument("--json", help="write the factors as JSON (alightsize.scale/1)")
-    s.set_defaults(run=_scale)
-    r = sub.add_parser("reports", help="regenerate the reference reports of the shipped examples")
+    r = _command(sub, "reports", _reports)
     r.add_argument("--examples", default=str(data_dir("examples") / "affdl-tr-66-33"),
                    help="folder of design configs (default: the shipped 1966 examples)")
     r.add_argument("--out", default="reports/affdl-tr-66-33", help="output folder")
-    r.set_defaults(run=_reports)
     return p
 
 

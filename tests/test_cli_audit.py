@@ -250,3 +250,20 @@ def test_an_output_path_that_cannot_be_written_exits_2_before_any_work(tmp_path,
     err = capsys.readouterr().err
     assert "--" in err and "Traceback" not in err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["f"]
+
+
+def test_every_command_help_names_its_schema_and_exit_statuses(capsys):
+    """`alightsize COMMAND --help` says what the command writes: every JSON schema it names is one the code
+    writes (the SCHEMA constants and literal schema strings of the package), and the exit statuses are listed."""
+    from alightsize.cli import COMMANDS
+    written = set()
+    for f in (Path(__file__).resolve().parents[1] / "alightsize").rglob("*.py"):
+        if f.name != "cli.py":
+            written |= set(re.findall(r"alightsize\.[a-z]+/\d+", f.read_text()))
+    for name in COMMANDS:
+        with pytest.raises(SystemExit) as e:
+            main([name, "--help"])
+        assert e.value.code == 0
+        text = capsys.readouterr().out
+        assert "exit status: 0" in text and "2 bad input" in text
+        assert set(re.findall(r"alightsize\.[a-z]+/\d+", text)) <= written, name

@@ -21,6 +21,7 @@ TABLE27 = {
 
 # Model-to-full-scale length and mass factors accepted: any drop test's model, with every Table 27 factor
 # (exponents up to |4| in mass and length) finite in double precision.
+SCHEMA = "alightsize.scale/1"             # the JSON `alightsize scale --json` writes (docs/contracts.md)
 SCALE_RANGE = (1e-4, 1e4)
 
 
