@@ -24,7 +24,7 @@ def _design(args) -> int:
     from alightsize.reports.design_report import write_design
     res = run_design(read_input(args.config), Path(args.out) / "landings", progress=True)
     files = write_design(res, Path(args.out))
-    lines = res.summary_lines()
+    lines = res.summary_lines(res.config.units)
     print(f"{res.config.configuration}: {lines[0]}")
     print("\n".join("  " + line for line in lines[1:]))
     print(f"wrote {', '.join(str(f) for f in files)}")

@@ -232,3 +232,27 @@ def test_an_envelope_error_names_the_envelope_key(tmp_path, written, found):
     with pytest.raises(InputError) as e:
         alightsize.read_lander(p)
     assert f"requirements.envelope.{found}:" in str(e.value) and "initial" not in str(e.value)
+
+
+def test_first_screen_and_workbook_give_what_the_terminal_gives(lunar, tmp_path):
+    """The report's first screen (before its first section) holds the verdict and the terminal's headlines
+    (governing check with its MS, weight against the goal); design.xlsx has a Sizing and a Landings sheet whose
+    rows are the summary's, speeds converted to the display unit (m/s here: equal to the SI value, 1e-12)."""
+    import pandas as pd
+    from alightsize.reports.design_report import write_design
+    write_design(lunar, tmp_path)
+    first = (tmp_path / "report.md").read_text().split("\n## ")[0]
+    lines = lunar.headlines(lunar.config.units)
+    assert any(h.startswith("governing check:") and "MS" in h for h in lines)
+    assert any(h.startswith("leg system:") and "goal" in h for h in lines)
+    for h in lines:
+        assert h.replace("_", "\\_") in first, h
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    sizing = pd.read_excel(tmp_path / "design.xlsx", sheet_name="Sizing")
+    assert list(sizing["Item"]) == [s["item"] for s in summary["sizing"]]
+    landings = pd.read_excel(tmp_path / "design.xlsx", sheet_name="Landings")
+    assert list(landings["Landing"]) == [r["run_id"] for r in summary["landings"]]
+    np.testing.assert_allclose(landings["Vertical speed (m/s)"],
+                               [r["conditions"]["vertical_m_s"] for r in summary["landings"]], rtol=1e-12)
+    np.testing.assert_allclose(landings["Peak XDD(3) (g)"], [r["peak"]["xdd_g"][2] for r in summary["landings"]],
+                               rtol=1e-12)

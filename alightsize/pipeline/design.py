@@ -10,6 +10,7 @@ import pandas as pd
 
 from alightsize.checks.audit import CheckRecord, audit_json, run_audit
 from alightsize.checks.sizing import Sizing, size_item
+from alightsize.common.units import fmt
 from alightsize.landings.criteria import violation_kinds
 from alightsize.pipeline.config import DesignConfig, DesignSpec, prepare
 from alightsize.pipeline.items import Item
@@ -70,9 +71,9 @@ class DesignResult:
         """(item, required factor) of every item required less than 1 (allowed only by allow_below_one)."""
         return [(i.name, i.required) for i in self.items if i.required < 1]
 
-    def summary_lines(self) -> list[str]:
+    def summary_lines(self, system: str = "SI") -> list[str]:
         """The one-screen summary: verdict (naming any required factor below 1), each criterion with the landing
-        nearest to violating it, governing member, weight."""
+        nearest to violating it, then the headlines (governing check, weight, members at a size bound)."""
         lines = [self.verdict()]
         land = self.config.landings
         if land is not None:
@@ -83,15 +84,26 @@ class DesignResult:
             if land.closest:
                 lines.append(CLOSEST_HEAD)
                 lines += ["  " + c.line() for c in land.closest]
+        return lines + self.headlines(system)
+
+    def headlines(self, system: str = "SI") -> list[str]:
+        """The first screen's lines after the landings: the governing check with its margin of safety, the leg
+        system's weight against its goal, and the sized items that stopped at a bound of their range."""
+        out = []
         gov = self.governing()
         if gov is not None:
-            lines.append(f"governing check: {gov.item.name} {gov.outcome.mode}, f = {gov.outcome.factor:.3g} "
-                         f"(required {gov.required:g}; MS {gov.margin:+.3f})")
+            out.append(f"governing check: {gov.item.name} {gov.outcome.mode}, f = {gov.outcome.factor:.3g} "
+                       f"(required {gov.required:g}; MS {gov.margin:+.3f})")
         frac, goal = self.weight_fraction, self.config.weight_goal
         if frac is not None:
-            lines.append(f"leg system: {self.per_leg * self.config.legs:.4g} kg, {100 * frac:.2f} % of the capsule"
-                         + (f" (goal {100 * goal:.2f} %: {'met' if self.weight_ok else 'exceeded'})" if goal else ""))
-        return lines
+            out.append(f"leg system: {fmt(self.per_leg * self.config.legs, 'mass', system)}, {100 * frac:.2f} % of "
+                       "the capsule" + (f" (goal {100 * goal:.2f} %: {'met' if self.weight_ok else 'exceeded'})"
+                                        if goal else ""))
+        bound = [s for s in self.sizings if s.at_bound]
+        if bound:
+            out.append("sized to an end of its range: " + ", ".join(
+                f"{s.item} {s.dimension.replace('_', ' ')} {fmt(s.sized, 'length', system)}" for s in bound))
+        return out
 
     def verdict(self) -> str:
         """One line: whether the design passes, and what fails."""

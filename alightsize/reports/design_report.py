@@ -9,6 +9,7 @@ from collections import Counter
 from math import isfinite
 from pathlib import Path
 
+import pandas as pd
 from openpyxl import Workbook
 from openpyxl.styles import Font
 
@@ -18,11 +19,11 @@ from alightsize.common.trace import Step
 from alightsize.common.units import fmt, to_display, unit_label
 from alightsize.pipeline.design import CLOSEST_HEAD, DesignResult, criteria_counts, governing_cases, summary_json
 from alightsize.loads.quasi_static import TELESCOPING
-from alightsize.pipeline.landings import LANDING, quasi_static_load
+from alightsize.pipeline.landings import LANDING, landings_json, quasi_static_load
 from alightsize.reports.loads_report import context as loads_context
 from alightsize.reports.loads_report import heatmap, write_workbook as write_loads_workbook
 from alightsize.pipeline.plots import design_factor_figure, weight_figure
-from alightsize.reports.rendering import save_workbook, template_env, text_cell
+from alightsize.reports.rendering import frame_sheet, save_workbook, template_env, text_cell
 from alightsize.common.atomic import write_atomic
 
 
@@ -88,14 +89,14 @@ def context(res) -> dict:
     total = res.per_leg * cfg.legs
     sizing = [{"item": s.item, "dimension": s.dimension.replace("_", " "), "printed": fmt(s.printed, "length", system),
                "sized": fmt(s.sized, "length", system), "f_printed": _factor(s.factor_printed),
-               "f_sized": _factor(s.factor_sized), "feasible": s.feasible,
+               "f_sized": _factor(s.factor_sized), "feasible": s.feasible, "at_bound": s.at_bound,
                "w_printed": fmt(s.weight_printed, "mass", system) if s.weight_printed else "",
                "w_sized": fmt(s.weight_sized, "mass", system) if s.weight_sized else "",
                "saved": fmt(s.weight_printed - s.weight_sized, "mass", system)
                if s.weight_printed and s.weight_sized else ""} for s in res.sizings]
     return {"loads": _loads_context(cfg, system), "references": _references(cfg, system),
             "verdict": res.verdict(), "checks_ok": res.checks_ok, "landings": _landings(cfg, system),
-            "closest_head": CLOSEST_HEAD, "closest": [{"line": c.line(), "failed": c.margin.failed,
+            "headlines": res.headlines(system), "closest_head": CLOSEST_HEAD, "closest": [{"line": c.line(), "failed": c.margin.failed,
                                                       "anchor": _anchor(c.run_id) if c.run_id else None}
                                                      for c in (cfg.landings.closest if cfg.landings else ())],
             "title": cfg.title, "configuration": cfg.configuration, "source": cfg.path.name, "units": system,
@@ -265,7 +266,45 @@ def write_workbook(res, path: Path) -> None:
             c.font = Font(bold=True)
         for col in sheet.columns:
             sheet.column_dimensions[col[0].column_letter].width = max(12, max(len(str(c.value or "")) for c in col) + 2)
+    if res.sizings:
+        frame_sheet(wb, "Sizing", sizing_frame(res, system))
+    if cfg.landings is not None:
+        frame_sheet(wb, "Landings", landings_frame(landings_json(cfg.landings), system))
     save_workbook(wb, path)
+
+
+def sizing_frame(res: DesignResult, system: str) -> pd.DataFrame:
+    """One row per sized item, lengths and weights in the display units."""
+    lu, wu = unit_label("length", system), unit_label("mass", system)
+    length, mass = (lambda v: to_display(v, "length", system)), (lambda v: to_display(v, "mass", system) if v else None)
+    return pd.DataFrame({"Item": [s.item for s in res.sizings],
+                         "Dimension": [s.dimension.replace("_", " ") for s in res.sizings],
+                         f"Printed ({lu})": [length(s.printed) for s in res.sizings],
+                         f"Sized ({lu})": [length(s.sized) for s in res.sizings],
+                         "f printed": [s.factor_printed for s in res.sizings],
+                         "f sized": [s.factor_sized for s in res.sizings],
+                         f"Weight printed ({wu})": [mass(s.weight_printed) for s in res.sizings],
+                         f"Weight sized ({wu})": [mass(s.weight_sized) for s in res.sizings],
+                         "Meets the required factor": ["yes" if s.feasible else "NO" for s in res.sizings],
+                         "At an end of its range": ["yes" if s.at_bound else "" for s in res.sizings]})
+
+
+def landings_frame(rows: list[dict], system: str) -> pd.DataFrame:
+    """One row per landing case (`landings_json`): its conditions in the display units, outcome, criteria and peak
+    accelerations."""
+    vu = unit_label("velocity", system)
+    speed = lambda v: to_display(v, "velocity", system) if v is not None else None    # noqa: E731
+    return pd.DataFrame({
+        "Landing": [r["run_id"] for r in rows],
+        f"Vertical speed ({vu})": [speed(r["conditions"].get("vertical_m_s")) for r in rows],
+        f"Horizontal speed ({vu})": [speed(r["conditions"].get("horizontal_m_s")) for r in rows],
+        "Slope (deg)": [r["conditions"].get("slope_deg") for r in rows],
+        "Heading from downhill (deg)": [r["conditions"].get("from_downhill_deg") for r in rows],
+        "mu static": [r["conditions"].get("mu_static") for r in rows],
+        "mu dynamic": [r["conditions"].get("mu_dynamic") for r in rows],
+        "Outcome": [r["outcome_class"] or r["outcome"] for r in rows],
+        "Criteria": ["met" if not r["criteria_failed"] else "fails: " + "; ".join(r["criteria_failed"]) for r in rows],
+        **{f"Peak XDD({k + 1}) (g)": [r["peak"]["xdd_g"][k] for r in rows] for k in range(3)}})
 
 
 def _png(fig, path: Path) -> None:

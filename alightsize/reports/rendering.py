@@ -10,7 +10,10 @@ import zipfile
 from pathlib import Path
 
 import jinja2
+import numpy as np
+import pandas as pd
 from openpyxl import Workbook
+from openpyxl.styles import Font
 from openpyxl.writer.excel import ExcelWriter
 
 from alightsize.common.resources import data_dir
@@ -46,6 +49,21 @@ def text_cell(cell, value) -> None:
     cell.value = value
     if isinstance(value, str):
         cell.data_type = "s"
+
+
+def frame_sheet(wb: Workbook, title: str, frame: pd.DataFrame) -> None:
+    """`frame` as a new sheet: a bold header, numbers as numbers (NaN and None as empty cells), text as text."""
+    ws = wb.create_sheet(title)
+    ws.append([str(c) for c in frame.columns])
+    for c in ws[1]:
+        c.font = Font(bold=True)
+    for r, row in enumerate(frame.itertuples(index=False), start=2):
+        for c, value in enumerate(row, start=1):
+            if isinstance(value, (float, np.floating)) and not np.isfinite(value):
+                value = None
+            text_cell(ws.cell(r, c), value.item() if isinstance(value, np.generic) else value)
+    for col in ws.columns:
+        ws.column_dimensions[col[0].column_letter].width = max(12, max(len(str(c.value or "")) for c in col) + 2)
 
 
 _EPOCH = datetime.datetime(2000, 1, 1)          # stands in for every timestamp a workbook would carry
