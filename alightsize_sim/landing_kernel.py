@@ -44,7 +44,7 @@ D = np.array([-12715105075 / 11282082432, 0, 87487479700 / 32700410799, -1069076
 END, BUFFER, BOTTOMED, TIPPED, BODY, QUIET, FAILED, STABLE, MEMBER = 0, 2, 3, 4, 5, 6, 7, 8, 9
 # Controls (float array).
 C_TFINAL, C_RTOL, C_ATOL, C_FIXED, C_MAXSTEP, C_EVENTTOL, C_STOPBOTTOM, C_TIPCOS, C_CLEAR, C_FLIGHT, \
-    C_QUIET_FRAC, C_TAUS, C_PERIOD, C_ENERGY_T = range(14)
+    C_QUIET_FRAC, C_TAUS, C_PERIOD, C_ENERGY_T, C_BAND = range(15)
 # Counters (int array).
 K_STEPS, K_REJECTED, K_RHS, K_HIST, K_EVENTS, K_TRIALS = range(6)
 # Leg state columns of the work array mt: static margin, reach deficit, alpha, beta, psi, footpad path error, soil
@@ -58,9 +58,11 @@ MAX_STALL = 100     # accepted steps in a row that do not advance time before th
 GTOL = 1e-12       # m: a contact event function this close above zero counts as there
 ARM = 1e-7          # m: a leg's next switch is armed once it is this far from its last one
 LOCKED = -1         # armed[i]: a leg that left at once on touching stays unarmed until it touches again
+FRESH = -2          # armed[i]: a leg that touched down at the current time; leaving before time advances, it is LOCKED
 TOUCH = 2           # armed[i]: a leg placed on the surface before the run, which touches down as the run starts
-BAND = 1e-4         # m: an unarmed leg switches only this far past zero (grazing contact never chatters)
-FACE_GAP = 1e-3     # m: an armed footpad touching down this far above the surface under it met a vertical face
+BAND = 1e-4         # m: the default grazing band (ctl[C_BAND]): an unarmed leg on the ground lifts off only this far
+                    # past zero, where it carries no force (grazing contact never chatters); see _events
+FACE_GAP = 1e-3     # m: a footpad touching down this far above the surface under it met a vertical face
 PATH_FLOOR = 100.0  # event_tol: steps this short or shorter skip the footpad path error (_error_norm)
 
 # Compiled functions that only compiled code calls (they take bundles, which Python cannot build): no Python or C
@@ -210,11 +212,15 @@ def rhs(arrays, y, dy, work):
 def _events(S, y, W, g, band):
     """Event functions g ((3 + 2C) n); an event is a crossing of zero from above. g[i]: leg i's free footpad height
     (in the air) or main-cell compression beyond its set less the reach deficit (on the ground, from the leg
-    state dt, mt already computed at y); an unarmed leg's threshold sits `band` past zero (BAND; 0.0 for the
-    raw values, a float so that numba compiles one version, not one per literal flag), so a footpad
-    grazing the terrain stays put at zero force until it clearly leaves instead of switching every step.
-    Not so for a footpad slid to the edge of its reach (deficit > 0): it still carries force, beyond the
-    friction cone, so it leaves at once.
+    state dt, mt already computed at y). An unarmed leg on the ground lifts off only `band` past zero (ctl[C_BAND];
+    0.0 for the raw values, a float so that numba compiles one version, not one per literal flag): its main cell
+    is then short of its set, where it carries no force, so a footpad grazing the terrain stays put at zero force
+    until it clearly leaves instead of switching every step. Not so for a footpad slid to the edge of its reach
+    (deficit > 0): it still carries force, beyond the friction cone, so it leaves at once. An unarmed leg in the
+    air touches down at zero (GTOL past it, above the round-off of a footpad left on the surface at its lift-off),
+    where its free footpad meets the terrain with its cells as they were in the air: re-contact brings no force
+    step, and results do not depend on the band. A LOCKED leg (one that left at once on touching) touches only
+    `band` past zero.
     g[n + i]: a sticking footpad's static margin mu_S FE3 + FLOOR - FE12 (N) when stick-to-slip is an event (for
     footpads with mass, a sliding one's distance from its Karnopp band, m/s), else the constant 1. g[2n + i]: a
     footpad's soil event (footpad_mass: R(s) + FLOOR - FE3 while the soil holds it, its sinking rate while it
@@ -234,8 +240,13 @@ def _events(S, y, W, g, band):
         else:
             foot = free_footpad(geo, cells, i, mem[i], shape[i], y[0:3], R)
             g[i] = foot[2] - pad_ground(mu, y, i, n, geo[9], foot[0], foot[1])
-        if not (armed[i] > 0 or (contact[i] and mt[i, 1] > 0.0)):
+        if contact[i]:
+            if armed[i] <= 0 and mt[i, 1] <= 0.0:
+                g[i] += band
+        elif armed[i] == LOCKED:
             g[i] += band
+        elif armed[i] == 0:
+            g[i] += min(band, GTOL)
         g[n + i] = mt[i, 0] if located and contact[i] else 1.0
         g[2 * n + i] = mt[i, 6] if contact[i] else 1.0
         for j in range(C):
@@ -376,14 +387,15 @@ def _switch(S, y, which, W):
     armed, last = S.armed, S.last
     dt, ft, Xt, rt = W.dt, W.ft, W.Xt, W.rt
     R = quat_matrix(y[6:10])
-    was_armed = armed[which] > 0
-    armed[which] = 0
+    locked, fresh = armed[which] == LOCKED, armed[which] == FRESH
+    armed[which] = FRESH
     C = mem.shape[1]
     v = (y[3], y[4], y[5])
     if contact[which]:
         _, alpha, beta, psi = _leg_force_call(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R,
                                               v, y[10:13], dt[which], ft[which], rt[which], Xt[which])
         contact[which] = 0
+        armed[which] = LOCKED if fresh else 0
         pad_switch(mu, y, which, P, sliding, False, Xt, R, geo[9])
         shape[which, 0], shape[which, 1], shape[which, 2] = lift_shape(geo, cells, which, mem[which], alpha, beta, psi,
                                                                        dt[which, 0], y[0:3], R)
@@ -392,10 +404,11 @@ def _switch(S, y, which, W):
         pad = free_footpad(geo, cells, which, mem[which], shape[which], y[0:3], R)
         top = pad_ground(mu, y, which, len(contact), geo[9], pad[0], pad[1])
         # A footpad touching down on the surface sits on it; one whose clearance jumped (swept into a step's
-        # riser or a box's side) is caught on that face where it is and held there until it lifts off. An
-        # unarmed footpad touches only BAND inside the surface (located within BAND / 2 below 50 m/s at the
-        # default event_tol): still above it, it met a face at the surface.
-        on_face = pad[2] - top > (FACE_GAP if was_armed else -0.5 * BAND)
+        # riser or a box's side) is caught on that face where it is and held there until it lifts off. A LOCKED
+        # footpad touches only the band inside the surface (located within half of it below 50 m/s at the
+        # default event_tol and band): still above it, it met a face at the surface.
+        band = S.ctl[C_BAND]
+        on_face = pad[2] - top > (-0.5 * band if locked else FACE_GAP)
         P[which, 0], P[which, 1], P[which, 2] = pad[0], pad[1], pad[2] if on_face else top
         contact[which] = 1
         sliding[which] = FACE if on_face else 1                 # (re)contact slides on mu_D (eq. 33)
@@ -565,7 +578,7 @@ def _guide(S, W, T, y, h, j, tol, flight):
         else:
             _dense(y, y1, K, h, m / h, yt)
         _legs(S, W, yt, quat_matrix(yt[6:10]))
-        _events(S, yt, W, gm, BAND)
+        _events(S, yt, W, gm, S.ctl[C_BAND])
         k = _first(g_prev, gm)
         if k >= 0:
             if k != j:
@@ -603,7 +616,7 @@ def _on_extension(S, T, W_lo, y, h, s):
     ys = T.y_lo
     _dense(y, T.y1, T.K, h, s / h, ys)
     _legs(S, W_lo, ys, quat_matrix(ys[6:10]))
-    _events(S, ys, W_lo, T.g_lo, BAND)
+    _events(S, ys, W_lo, T.g_lo, S.ctl[C_BAND])
     return _first(T.g_prev, T.g_lo) < 0
 
 
@@ -649,6 +662,7 @@ def run(arrays, y, t, history, scratch):
     mass, gravity, mu, mem, contact, P, sliding, armed = S.mass, S.gravity, S.mu, S.mem, S.contact, S.P, S.sliding, \
         S.armed
     ctl, cnt, run_state = S.ctl, S.cnt, S.run_state
+    band = ctl[C_BAND]
     n = mem.shape[0]
     Pt, slt, Xt = W.Pt, W.slt, W.Xt
     for i in range(n):
@@ -660,7 +674,7 @@ def run(arrays, y, t, history, scratch):
         _copy1(H.dy[0], K[0])
         cnt[K_HIST] = 1
     cnt[K_RHS] += 1
-    _events(S, y, W, g_prev, BAND)
+    _events(S, y, W, g_prev, band)
     weight = mass * np.sqrt(gravity[0] ** 2 + gravity[1] ** 2 + gravity[2] ** 2)
     fixed = ctl[C_FIXED] > 0.0
     h = ctl[C_FIXED] if fixed else run_state[S_H]
@@ -682,7 +696,7 @@ def run(arrays, y, t, history, scratch):
                 cnt[K_REJECTED] += 1
                 h *= _shrink(e)
                 continue
-        _events(S, y1, W, g1, BAND)
+        _events(S, y1, W, g1, band)
         j = _first(g_prev, g1)
         if j >= 0:
             # The earliest event: located first on the step's continuous extension (_guide); the step is
@@ -729,7 +743,7 @@ def run(arrays, y, t, history, scratch):
                     e_trial = _error_norm(S, y, y1, err, W, weight, mid)
                     if not e_trial <= 1.0:                 # the trial step itself fails the error test
                         break
-                _events(S, y1, W, g1, BAND)
+                _events(S, y1, W, g1, band)
                 k = _first(g_prev, g1)
                 newton += 1
                 if k >= 0:
@@ -769,6 +783,10 @@ def run(arrays, y, t, history, scratch):
         if stalled > MAX_STALL:
             return FAILED, t
         t += h_acc
+        if h_acc > 0.0:
+            for i in range(n):
+                if armed[i] == FRESH:
+                    armed[i] = 0
         _copy1(y, y1)
         qn = np.sqrt(y[6] ** 2 + y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
         for c in range(6, 10):
@@ -799,10 +817,10 @@ def run(arrays, y, t, history, scratch):
                     P[i, 0], P[i, 1], P[i, 2] = Pt[i, 0], Pt[i, 1], Pt[i, 2]
         _copy1(H.dy[k], K[0])
         cnt[K_HIST] = k + 1
-        _events(S, y, W, g_prev, BAND)
+        _events(S, y, W, g_prev, band)
         # A footpad that is out of reach from the start (a touchdown or slide start leaving it beyond the
         # friction cone at the edge of its reach) never crosses zero from above: it leaves now.
-        # It stays unarmed until it touches again (BAND past zero), whatever its height: a touchdown is located
+        # It stays LOCKED until it touches again (the band past zero), whatever its height: a touchdown is located
         # to within event_tol, so the footpad may hang above the terrain by more than ARM, and re-arming it
         # there would let it touch and leave again at the same instant.
         for i in range(n):
@@ -812,7 +830,7 @@ def run(arrays, y, t, history, scratch):
                 _rhs(S, y, K[0], W)
                 cnt[K_RHS] += 1
                 _copy1(H.dy[k], K[0])
-                _events(S, y, W, g_prev, BAND)
+                _events(S, y, W, g_prev, band)
         if fixed:
             h = ctl[C_FIXED]
         elif flight:
