@@ -60,7 +60,7 @@ GTOL = 1e-12       # m: a contact event function this close above zero counts as
 ARM = 1e-7          # m: a leg's next switch is armed once it is this far from its last one
 LOCKED = -1         # armed[i]: a leg that left at once on touching, or at the edge of its reach still pushed beyond the
                     # friction cone, touches again only the band past zero
-FRESH = -2          # armed[i]: a leg that touched down at the current time; leaving before time advances, it is LOCKED
+FRESH = -2          # armed[i]: a leg that has just touched down; leaving before a step longer than event_tol, LOCKED
 BANDED = -3         # armed[i]: a leg that left short of its set (the grazing band) touches again the band past zero
 TOUCH = 2           # armed[i]: a leg placed on the surface before the run, which touches down as the run starts
 BAND = 1e-4         # m: the default grazing band (ctl[C_BAND]): an unarmed leg on the ground lifts off only this far
@@ -809,7 +809,7 @@ def run(arrays, y, t, history, scratch):
         if stalled > MAX_STALL:
             return FAILED, t
         t += h_acc
-        if stalled == 0:                               # time advanced: legs touching at the start are no longer FRESH
+        if h_acc > ctl[C_EVENTTOL]:                    # a step past event_tol: legs that touched are no longer FRESH
             for i in range(n):
                 if armed[i] == FRESH:
                     armed[i] = 0
