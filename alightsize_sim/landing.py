@@ -89,9 +89,11 @@ class Controls:
     contact_band: float = lk.BAND
 
     def __post_init__(self):
-        if not self.contact_band >= 10.0 * lk.ARM:
-            raise ValueError(f"the grazing band must be at least {10.0 * lk.ARM:g} m, ten times the distance that "
-                             "re-arms a leg's switch")
+        least = max(10.0 * lk.ARM, lk.GRAZE_SPEED * self.event_tol)
+        if not self.contact_band >= least:
+            raise ValueError(f"the grazing band must be at least {least:g} m: ten times the distance that re-arms a "
+                             f"leg's switch and what a footpad at {lk.GRAZE_SPEED:g} m/s crosses in event_tol, so that "
+                             "a leg cannot touch and leave within one located event")
 
 
 @dataclass
