@@ -32,6 +32,7 @@ from .articulated_cells import lower_deflection, lower_lever, return_spring_forc
 from .articulated_kinematics import ArticulatedGeometry, _sin_psi, footpad, nearest_root
 from .articulated_statics import ground_components
 from .crush_cell import CellModel
+from .terrain import clearance
 from .telescoping_leg import cell_force
 from .vec3 import cross, mtv, mv
 
@@ -151,7 +152,8 @@ def lift_shape(geo, cells, i, mem, alpha, beta, psi, main, r, R):
     """Stored geometry at lift-off (FORCE 3.10): the peg leg springs back to alpha = 0 at the lift-off psi if
     its tip clears the terrain there, else the loaded shape is kept (main, the upper cell's deflection,
     unused: the telescoping leg's interface)."""
-    if free_footpad(geo, cells, i, mem, (0.0, beta, psi), r, R)[2] >= 0.0:
+    tip = free_footpad(geo, cells, i, mem, (0.0, beta, psi), r, R)
+    if clearance(geo[9], tip[0], tip[1], tip[2]) >= 0.0:
         return 0.0, beta, psi
     return alpha, beta, psi
 

@@ -16,6 +16,14 @@ relative to the capsule (the leg's rate is computed with v - u); the capsule los
 (fe = R X, terrain axes), the footpad gains -fe . u and friction takes -G . u. The footpad's weight is not
 modelled: its mass only gives the slide inertia (the capsule's mass includes it).
 
+On rigid ground a footpad slides on the terrain's relief (a rock's flank, the height field; terrain.relief): its
+height follows the relief and u has the rise u3 = -(n1 u1 + n2 u2) / n3, push and friction are taken along the
+surface and FE3 along its normal n, and the footpad, massless across the plane, has the normal force N that
+balances its forces along the terrain's normal (_friction), so that they do work only through its in-plane
+motion and the audit above holds. On the plane all of this is the plane's. Where friction locks a climb
+(n3 - mu_D t3 at LOCK, t its direction: N would grow without bound), or on the ground at a rock's foot, a
+sliding footpad is caught and held as on a face (ground_event).
+
 On soil (`PadModel.area` > 0; alightsize_sim.soil) a footpad also sinks along the terrain normal. Its sinkage s
 and rate w are state, with two modes located as events: HELD (w = 0: the soil carries the leg's push FE3 as
 long as it is below the bearing force R(s) = A p(s)) and SINKING (m w' = FE3 - R(s), from the moment FE3
@@ -47,7 +55,7 @@ from . import crush_cell
 from .legs import leg_force
 from .rigid_body import quat_matrix
 from .soil import normal_force, plowing_force, sinkage_depth, sinkage_work
-from .terrain import BOX, HEMISPHERE, features_at, height
+from .terrain import BOX, HEMISPHERE, features_at, foot_distance, height, relief
 from .vec3 import mv
 
 NB = 14            # body states before the footpads'
@@ -56,6 +64,9 @@ FLOOR = 1e-6       # N: in-plane force below this never starts a slide (round-of
 LEAVE = 2.0        # a banded footpad slides at LEAVE x band, a sliding one enters the band at band (hysteresis:
                    # footpads at the band's edge, coupled through the capsule, cannot switch back and forth at once)
 SINK_BAND = 1e-6   # a sinking footpad whose speed turned negative stops only under a push this much below R(s)
+LOCK = 0.05        # n3 - mu_D t3 below this (a push up a flank steeper than friction lets it climb) counts as this
+FOOT_TOL = 1e-4    # m: a footpad on soil whose event is located this near a rock's foot has slid into it (50 m/s x
+                   # the largest event_tol a scene takes)
 
 RIGID, HELD, SINKING = -1.0, 0.0, 1.0     # soil modes of a footpad on the ground
 
@@ -130,20 +141,67 @@ def pad_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, f
     u0 = u1 = u2 = 0.0
     if sliding > STICK:
         P[0], P[1], u0, u1 = y[o], y[o + 1], y[o + 2], y[o + 3]
-    if sliding != FACE and mu.area > 0.0:
+    nrm = _normal(mu, geo[9], y, i, n, P[0], P[1])
+    if sliding != FACE and not nrm[3]:                          # on soil
         k = _sink_at(y, n, i)
         P[2], u2 = y[k + 2] - y[k], -y[k + 1]
+    rise = 0.0
+    if sliding > STICK and nrm[3]:                              # on rigid ground it slides on the relief
+        P[2] = P0[2] + relief(geo[9], P[0], P[1])[0] - relief(geo[9], P0[0], P0[1])[0]
+        rise = -(nrm[0] * u0 + nrm[1] * u1) / nrm[2]
+        u2 = rise
     power, alpha, beta, psi = leg_force(geo, cells, i, mem, shape, P, r, R, (v[0] - u0, v[1] - u1, v[2] - u2), w,
                                         defl, frc, rte, X)
     if sliding == FACE:
         return sliding, power, alpha, beta, psi, 1.0, 0.0, 0.0, 1.0
     fe = mv(R, X[0], X[1], X[2])
     if sliding == STICK:
-        g = mu.mu_s * max(fe[2], 0.0) + _plow(mu, y, i, n) + FLOOR - np.sqrt(fe[0] * fe[0] + fe[1] * fe[1])  # eq. 33
+        load, p0, p1, p2 = _split(fe, nrm)
+        g = mu.mu_s * max(load, 0.0) + _plow(mu, y, i, n) + FLOOR - np.sqrt(p0 * p0 + p1 * p1 + p2 * p2)  # eq. 33
     else:
-        speed = np.hypot(u0, u1)
+        speed = np.sqrt(u0 * u0 + u1 * u1 + rise * rise)
         g = speed - mu.band if sliding == SLIDE else LEAVE * mu.band - speed
-    return sliding, power, alpha, beta, psi, g, 0.0, 0.0, _sink_event(mu, y, i, n, fe[2])
+    if not nrm[3]:                                              # on soil; one sliding is caught at a rock's foot
+        ground = _sink_event(mu, y, i, n, fe[2])
+        if sliding > STICK:
+            ground = min(ground, foot_distance(geo[9], P[0], P[1]))
+    elif sliding > STICK:
+        ground = _climb(mu, geo[9], nrm, P[0], P[1], u0, u1, rise)
+    else:
+        ground = 1.0
+    return sliding, power, alpha, beta, psi, g, 0.0, 0.0, ground
+
+
+@njit(cache=True)
+def _climb(mu, terrain, nrm, x, yy, u0, u1, u2):
+    """Relief event value of a footpad sliding on rigid ground at (x, yy) with velocity u along the surface of normal
+    nrm. On a rock's flank (or the height field's relief) n3 - mu_D t3 - LOCK, t the direction of u, which falls to
+    zero where friction locks the climb (the normal force fe3 / (n3 - mu_D t3) of a footpad massless across the
+    plane would have to grow without bound), and it is caught there (ground_event); on flat ground its distance to
+    the nearest rock's foot, so that one sliding into a rock's 85 deg foot, which it can climb only with mu_D below
+    0.04, is caught where it meets it."""
+    if relief(terrain, x, yy)[0] != 0.0 or nrm[2] < 1.0:
+        s = np.sqrt(u0 * u0 + u1 * u1 + u2 * u2)
+        return nrm[2] - mu.mu_d * u2 / s - LOCK if s > 0.0 else nrm[2] - LOCK
+    return foot_distance(terrain, x, yy)
+
+
+@njit(cache=True)
+def _normal(mu, terrain, y, i, n, x, yy):
+    """(n0, n1, n2, rigid): the unit normal footpad i (of n) at (x, yy) bears on, and whether it is on rigid ground
+    (no soil, or a rock): there the terrain's relief (the plane where there is none), on soil the plane's."""
+    if mu.area > 0.0 and y[_sink_at(y, n, i) + 3] != RIGID:
+        return 0.0, 0.0, 1.0, False
+    _, n0, n1, n2 = relief(terrain, x, yy)
+    return n0, n1, n2, True
+
+
+@njit(cache=True)
+def _split(fe, nrm):
+    """(N, p0, p1, p2): the normal part fe . n of the leg's force fe on the capsule and the leg's push along the
+    surface on the footpad, -(fe - N n)."""
+    load = fe[0] * nrm[0] + fe[1] * nrm[1] + fe[2] * nrm[2]
+    return load, load * nrm[0] - fe[0], load * nrm[1] - fe[1], load * nrm[2] - fe[2]
 
 
 @njit(cache=True)
@@ -159,36 +217,47 @@ def _sink_event(mu, y, i, n, fe2):
 
 
 @njit(cache=True)
-def _friction(mode, limit, fe0, fe1, u0, u1):
-    """Ground friction (G0, G1) on a moving footpad of dynamic limit `limit` (N) under the leg's force fe on the
-    capsule (eq. 35-37)."""
+def _friction(mode, mu_d, plow, fe, nrm, u0, u1, u2):
+    """(G0, G1, G2, N): ground friction on a moving footpad (velocity u along the surface of normal nrm) and the
+    surface's normal force N, under the leg's force fe on the capsule (eq. 35-37), its limit mu_D N plus the
+    plowing force. The footpad is massless across the plane: N holds the footpad's forces in balance along the
+    plane's normal, so that they do work only through its in-plane motion (on the plane N = FE3). Karnopp's band
+    (Karnopp 1985): friction balances the push along the surface up to the limit."""
+    load, p0, p1, p2 = _split(fe, nrm)
     if mode == SLIDE:
-        s = np.hypot(u0, u1)
-        return (-limit * u0 / s, -limit * u1 / s) if s > 0.0 else (0.0, 0.0)
-    p0, p1 = -fe0, -fe1                                         # the leg's push on the footpad
-    p = np.hypot(p0, p1)
-    if p <= limit:                                              # Karnopp: friction balances the push
-        return fe0, fe1
-    return -limit * p0 / p, -limit * p1 / p
+        s = np.sqrt(u0 * u0 + u1 * u1 + u2 * u2)
+        if not s > 0.0:
+            return 0.0, 0.0, 0.0, load
+        t0, t1, t2 = u0 / s, u1 / s, u2 / s
+        normal = max((fe[2] + plow * t2) / max(nrm[2] - mu_d * t2, LOCK), 0.0)
+        limit = mu_d * normal + plow
+        return -limit * t0, -limit * t1, -limit * t2, normal
+    p = np.sqrt(p0 * p0 + p1 * p1 + p2 * p2)
+    if p <= mu_d * max(load, 0.0) + plow or nrm[2] - mu_d * p2 / p <= LOCK:   # Karnopp: friction balances the
+        return -p0, -p1, -p2, load                                           # push (or locks a climb)
+    t0, t1, t2 = p0 / p, p1 / p, p2 / p
+    normal = max((load * nrm[2] - (p - plow) * t2) / (nrm[2] - mu_d * t2), 0.0)
+    limit = mu_d * normal + plow
+    return -limit * t0, -limit * t1, -limit * t2, normal
 
 
-def pad_rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy):
+def pad_rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy, terrain):
     """Footpad state derivatives into dy, given the legs' state and the power they take from the capsule at
     held footpads; returns the power the footpads take beyond that (-fe . u summed). A no-op returning 0 without
     footpad mass."""
     if isinstance(mu, PadModel):
-        return _rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy)
+        return _rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy, terrain)
     return 0.0
 
 
 @overload(pad_rates)
-def _pad_rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy):
+def _pad_rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy, terrain):
     if is_pad(mu):
         return _rates
-    return lambda mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy: 0.0
+    return lambda mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy, terrain: 0.0
 
 
-def _rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy):
+def _rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy, terrain):
     n, C = len(contact), ft.shape[1]
     cd, cf, cn, ck, _, cy = cells
     extra, lost, other, sunk = 0.0, 0.0, power, 0.0
@@ -213,14 +282,18 @@ def _rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy):
         if on and sliding[i] > STICK:
             u0, u1 = y[o + 2], y[o + 3]
             plow = _plow(mu, y, i, n)
-            limit = mu.mu_d * max(fe[2], 0.0) + plow
-            g0, g1 = _friction(sliding[i], limit, fe[0], fe[1], u0, u1)
+            nrm = _normal(mu, terrain, y, i, n, y[o], y[o + 1])
+            u2 = -(nrm[0] * u0 + nrm[1] * u1) / nrm[2] if nrm[3] else 0.0   # its rise along the relief
+            g0, g1, g2, normal = _friction(sliding[i], mu.mu_d, plow, fe, nrm, u0, u1, u2)
             dy[o], dy[o + 1] = u0, u1
-            dy[o + 2], dy[o + 3] = (g0 - fe[0]) / mu.mass, (g1 - fe[1]) / mu.mass
-            extra -= fe[0] * u0 + fe[1] * u1
+            dy[o + 2] = (g0 - fe[0] + normal * nrm[0]) / mu.mass
+            dy[o + 3] = (g1 - fe[1] + normal * nrm[1]) / mu.mass
+            extra -= fe[0] * u0 + fe[1] * u1 + fe[2] * u2
+            limit = mu.mu_d * normal + plow
             share = plow / limit if limit > 0.0 else 0.0          # the plowing part of the slide's resistance
-            lost -= (1.0 - share) * (g0 * u0 + g1 * u1)
-            sunk -= share * (g0 * u0 + g1 * u1)
+            work = g0 * u0 + g1 * u1 + g2 * u2
+            lost -= (1.0 - share) * work
+            sunk -= share * work
     dy[NB + 4 * n], dy[NB + 4 * n + 1] = lost, other
     if mu.area > 0.0:
         dy[len(y) - 1] = sunk
@@ -286,7 +359,7 @@ def _soil_switch(mu, y, i, n, P, face, down, Xt, R, terrain):
     kind = features_at(terrain, P[i, 0], P[i, 1])[0]
     rock = kind == HEMISPHERE or kind == BOX
     # Fresh ground unless it landed in its hole: within its radius, on the hole's bottom (not a lower level).
-    if rock or _hole(mu, y, i, n, P[i, 0], P[i, 1], np.inf) > P[i, 2] + 1e-12:
+    if rock or _hole(mu, y, i, n, P[i, 0], P[i, 1], np.inf, terrain) > P[i, 2] + 1e-12:
         y[k], y[k + 2] = 0.0, P[i, 2]
     if rock:                                                            # rocks are rigid
         return
@@ -296,25 +369,28 @@ def _soil_switch(mu, y, i, n, P, face, down, Xt, R, terrain):
 
 def pad_ground(mu, y, i, n, terrain, x, yy):
     """Height of the ground under leg i's free footpad (of n) at (x, yy): the terrain's surface, or on soil the
-    bottom of the hole the footpad left when its centre is over it."""
+    bottom of the hole the footpad left when its centre is over it (not where a rock stands)."""
     top = height(terrain, x, yy)
-    return _hole(mu, y, i, n, x, yy, top) if isinstance(mu, PadModel) else top
+    return _hole(mu, y, i, n, x, yy, top, terrain) if isinstance(mu, PadModel) else top
 
 
 @overload(pad_ground)
 def _pad_ground(mu, y, i, n, terrain, x, yy):
     if is_pad(mu):
-        return lambda mu, y, i, n, terrain, x, yy: _hole(mu, y, i, n, x, yy, height(terrain, x, yy))
+        return lambda mu, y, i, n, terrain, x, yy: _hole(mu, y, i, n, x, yy, height(terrain, x, yy), terrain)
     return lambda mu, y, i, n, terrain, x, yy: height(terrain, x, yy)
 
 
 @njit(cache=True)
-def _hole(mu, y, i, n, x, yy, top):
-    """min(top, the bottom of footpad i's hole) when (x, yy) is within its radius of the hole's centre."""
+def _hole(mu, y, i, n, x, yy, top, terrain):
+    """min(top, the bottom of footpad i's hole) when (x, yy) is within its radius of the hole's centre and no rock
+    stands there (rocks are rigid: a hole in the soil beside one does not reach into it)."""
     if mu.area > 0.0:
         k, o = _sink_at(y, n, i), NB + 4 * i
         if y[k] > 0.0 and (x - y[o]) ** 2 + (yy - y[o + 1]) ** 2 < 0.25 * mu.diameter ** 2:
-            return min(top, y[k + 2] - y[k])
+            kind = features_at(terrain, x, yy)[0]
+            if kind != HEMISPHERE and kind != BOX:
+                return min(top, y[k + 2] - y[k])
     return top
 
 
@@ -326,23 +402,23 @@ def _stop(mu, y, i, n):
     y[o + 2] = y[o + 3] = 0.0
 
 
-def pad_event(mu, y, i, P, sliding, Xt):
+def pad_event(mu, y, i, P, sliding, Xt, terrain):
     """A slip event of leg i (returns True: the forces change); without footpad mass a sticking footpad
     starts to slide."""
-    return (_event if isinstance(mu, PadModel) else _start)(mu, y, i, P, sliding, Xt)
+    return (_event if isinstance(mu, PadModel) else _start)(mu, y, i, P, sliding, Xt, terrain)
 
 
 @overload(pad_event)
-def _pad_event(mu, y, i, P, sliding, Xt):
+def _pad_event(mu, y, i, P, sliding, Xt, terrain):
     return _event if is_pad(mu) else _start
 
 
-def _start(mu, y, i, P, sliding, Xt):
+def _start(mu, y, i, P, sliding, Xt, terrain):
     sliding[i] = 1
     return True
 
 
-def _event(mu, y, i, P, sliding, Xt):
+def _event(mu, y, i, P, sliding, Xt, terrain):
     """STICK -> BAND (the static limit is passed: the footpad starts from rest); BAND -> SLIDE; SLIDE -> BAND,
     or STICK when the push is within the dynamic limit there."""
     if sliding[i] == STICK:
@@ -351,20 +427,39 @@ def _event(mu, y, i, P, sliding, Xt):
         sliding[i] = SLIDE
     else:
         sliding[i] = BAND
-        _settle(mu, y, i, P, sliding, Xt)
+        _settle(mu, y, i, P, sliding, Xt, terrain)
     return True
 
 
-def sink_event(mu, y, i, sliding):
-    """A soil event of leg i (returns True): a held footpad starts to sink; a sinking one stops (its kinetic
-    energy, from a speed within the event tolerance of zero, goes to the soil). Never without soil."""
-    return isinstance(mu, PadModel) and _sink(mu, y, i, len(sliding))
+def ground_event(mu, y, i, sliding, terrain):
+    """A soil or relief event of leg i (returns True). On soil a held footpad starts to sink; a sinking one stops
+    (its kinetic energy, from a speed within the event tolerance of zero, goes to the soil). On rigid ground a
+    sliding footpad that meets a flank it cannot climb, or a rock's foot, is caught there as on a face (FACE), its
+    kinetic energy counted as friction. Never without footpad mass."""
+    return isinstance(mu, PadModel) and _ground_event(mu, y, i, sliding, terrain)
 
 
-@overload(sink_event)
-def _sink_event_overload(mu, y, i, sliding):
-    return (lambda mu, y, i, sliding: _sink(mu, y, i, len(sliding))) if is_pad(mu) else \
-        (lambda mu, y, i, sliding: False)
+@overload(ground_event)
+def _ground_event_overload(mu, y, i, sliding, terrain):
+    return _ground_event.py_func if is_pad(mu) else (lambda mu, y, i, sliding, terrain: False)
+
+
+@njit(cache=True)
+def _ground_event(mu, y, i, sliding, terrain):
+    n, o = len(sliding), NB + 4 * i
+    if mu.area > 0.0:
+        k = _sink_at(y, n, i)
+        if y[k + 3] != RIGID:
+            # The soil's event, unless the footpad slid to a rock's foot (located within FOOT_TOL of it).
+            if sliding[i] <= STICK or not foot_distance(terrain, y[o], y[o + 1]) < FOOT_TOL:
+                return _sink(mu, y, i, n)
+            if y[k + 3] == SINKING:                             # its sinking stops: its kinetic energy to the soil
+                y[len(y) - 1] += 0.5 * mu.mass * y[k + 1] ** 2
+                y[k + 1] = 0.0
+            y[k + 3] = RIGID
+    _stop(mu, y, i, n)
+    sliding[i] = FACE
+    return True
 
 
 @njit(cache=True)
@@ -379,22 +474,22 @@ def _sink(mu, y, i, n):
     return True
 
 
-def pad_settle(mu, y, i, P, sliding, Xt):
+def pad_settle(mu, y, i, P, sliding, Xt, terrain):
     """After an accepted step: a banded footpad whose push is below the dynamic limit sticks where it is
     (returns whether it did): a footpad touching down slides on mu_D like the massless one (eq. 33). On soil,
     a mode its event missed is caught up: a held footpad pushed past R(s) sinks, a sinking one at w < 0 stops
     once its push is below R(s) by SINK_BAND (one that has just started, located to within event_tol before
     its push reached R(s), may turn back for a moment). A no-op without footpad mass."""
-    return isinstance(mu, PadModel) and _settle(mu, y, i, P, sliding, Xt)
+    return isinstance(mu, PadModel) and _settle(mu, y, i, P, sliding, Xt, terrain)
 
 
 @overload(pad_settle)
-def _pad_settle(mu, y, i, P, sliding, Xt):
-    return _settle.py_func if is_pad(mu) else (lambda mu, y, i, P, sliding, Xt: False)
+def _pad_settle(mu, y, i, P, sliding, Xt, terrain):
+    return _settle.py_func if is_pad(mu) else (lambda mu, y, i, P, sliding, Xt, terrain: False)
 
 
 @njit(cache=True)
-def _settle(mu, y, i, P, sliding, Xt):
+def _settle(mu, y, i, P, sliding, Xt, terrain):
     n = len(sliding)
     if sliding[i] != BAND and not (mu.area > 0.0 and sliding[i] != FACE):
         return False
@@ -408,9 +503,13 @@ def _settle(mu, y, i, P, sliding, Xt):
             changed = _sink(mu, y, i, n)
     if sliding[i] != BAND:
         return changed
-    if not np.hypot(fe[0], fe[1]) < mu.mu_d * fe[2] + _plow(mu, y, i, n) or fe[2] <= 0.0:   # unloaded: in the band
-        return changed
     o = NB + 4 * i
+    nrm = _normal(mu, terrain, y, i, n, y[o], y[o + 1])
+    load, p0, p1, p2 = _split(fe, nrm)
+    p = np.sqrt(p0 * p0 + p1 * p1 + p2 * p2)
+    held = p < mu.mu_d * load + _plow(mu, y, i, n) or (p > 0.0 and nrm[2] - mu.mu_d * p2 / p <= LOCK)   # or locked
+    if not held or load <= 0.0:                                 # unloaded: in the band
+        return changed
     _stop(mu, y, i, n)
     P[i, 0], P[i, 1] = y[o], y[o + 1]                     # its height as the step loop last placed it
     sliding[i] = STICK

@@ -1,14 +1,16 @@
 """Footpad slip on the terrain (AFFDL-TR-66-33 Sec. V.E.5, eq. 31-37, subroutine SLIP; Sec. V.F for either leg).
 
-The ground force is first computed with the footpad where it was at the last accepted step. If its in-plane
-part FE12 exceeds the potential friction force (mu_S FE3 while sticking, mu_D FE3 while sliding; eq. 32-34),
-the footpad slides, kept in the terrain plane (eq. 35-37), until FE12 = mu_D FE3.
+The ground force is first computed with the footpad where it was at the last accepted step. If its part FE12
+along the surface exceeds the potential friction force (mu_S FE3 while sticking, mu_D FE3 while sliding; eq. 32-34,
+FE3 its part along the surface's normal: the terrain plane's, or on a rock's flank or the height field the
+relief's, terrain.relief), the footpad slides, kept on the surface (eq. 35-37: in the terrain plane, rising and
+falling with the relief), until FE12 = mu_D FE3.
 
 Departure from the report: SLIP varies the leg's tilt alpha at fixed beta. That path is undefined at
 alpha = 0 (a leg hanging straight at touchdown, beta undefined) and cannot follow a push across the beta
 plane, where it wanders far from the held position looking for a root. Here the footpad moves along a
-straight line in the terrain plane, in the direction the leg pushes it (-FE12, the direction friction
-opposes), which is defined whatever the tilt.
+straight line in the terrain plane (on the relief: its height follows the relief), in the direction the leg
+pushes it (-FE12, the direction friction opposes), which is defined whatever the tilt.
 
 A sticking footpad whose static limit is exceeded inside an integration step is held (`hold`) when
 mu_S > mu_D: the force would drop from mu_S FE3 to mu_D FE3 there, so the step loop locates the crossing of
@@ -38,8 +40,9 @@ import numpy as np
 from numba import njit, types
 from numba.extending import overload
 
-from .footpad_mass import FLOOR, PadModel, is_pad, pad_force
+from .footpad_mass import FLOOR, LOCK, PadModel, is_pad, pad_force
 from .legs import leg_force, main_set
+from .terrain import relief
 from .vec3 import mv
 
 MAX_EXPAND = 200
@@ -115,19 +118,51 @@ def _slipping(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, f
 
 @njit(cache=True)
 def _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
-    """(FE12, FE3, FE1, FE2, cells' power, alpha, beta, psi) with the footpad at P."""
+    """(FE12, FE3, FT1, FT2, cells' power, alpha, beta, psi) with the footpad at P: the ground force's parts along
+    the surface and normal to it (eq. 31-32 with the normal of the terrain's relief under P, the terrain plane's
+    where there is none) and the in-plane components of its part along the surface."""
     power, alpha, beta, psi = leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
     fe = mv(R, X[0], X[1], X[2])                                # eq. 31
-    return np.sqrt(fe[0] * fe[0] + fe[1] * fe[1]), fe[2], fe[0], fe[1], power, alpha, beta, psi   # eq. 32
+    _, n0, n1, n2 = relief(geo[9], P[0], P[1])
+    fe3 = fe[0] * n0 + fe[1] * n1 + fe[2] * n2
+    t0, t1, t2 = fe[0] - fe3 * n0, fe[1] - fe3 * n1, fe[2] - fe3 * n2
+    return np.sqrt(t0 * t0 + t1 * t1 + t2 * t2), fe3, t0, t1, power, alpha, beta, psi   # eq. 32
+
+
+@njit(cache=True, inline="always")
+def _place(terrain, P0, d0, d1, s, P):
+    """P = the footpad moved by s along the in-plane direction d from P0, on the terrain's relief: its height
+    changes as the relief's (on the plane, a step or a box top it keeps its height)."""
+    P[0], P[1] = P0[0] + s * d0, P0[1] + s * d1
+    P[2] = P0[2] + relief(terrain, P[0], P[1])[0] - relief(terrain, P0[0], P0[1])[0]
+
+
+@njit(cache=True, inline="always")
+def _push(t0, t1):
+    """In-plane unit direction of the leg's push on the footpad along the surface, -(FT1, FT2) / |.|."""
+    th = np.sqrt(t0 * t0 + t1 * t1)
+    return (-t0 / th, -t1 / th) if th > 0.0 else (0.0, 0.0)
 
 
 @njit(cache=True)
 def _at(geo, cells, i, mem, shape, mu, P0, d0, d1, s, r, R, v, w, P, defl, frc, rte, X):
-    """Excess FE12 - mu FE3 and force scale with the footpad at P0 + s d; False out of the leg's reach."""
-    P[0], P[1], P[2] = P0[0] + s * d0, P0[1] + s * d1, P0[2]
-    fe12, fe3, _, _, _, _, _, _ = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
+    """Excess FE12 - mu FE3 and force scale with the footpad moved by s along d from P0; False out of the leg's
+    reach. On a rock's flank, or leaving one, the excess counts the push along the path only (across the foot of
+    a rock the normal turns, and a push there may drive the footpad back), and where the path climbs a flank
+    steeper than friction lets a footpad climb (n3 - mu t3 <= LOCK, t its direction: a rock's foot,
+    footpad_mass._climb) the flank holds the footpad: the excess there is -1."""
+    _place(geo[9], P0, d0, d1, s, P)
+    fe12, fe3, t0, t1, _, _, _, _ = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
     if defl[0] < main_set(cells, i, mem):
         return -1.0, 0.0, False
+    _, n0, n1, n2 = relief(geo[9], P[0], P[1])
+    if n2 < 1.0 or relief(geo[9], P0[0], P0[1])[3] < 1.0:
+        rise = -(n0 * d0 + n1 * d1) / n2                        # the relief's slope along d
+        m = np.sqrt(1.0 + rise * rise)
+        if n2 - mu * rise / m <= LOCK:
+            return -1.0, fe12 + abs(fe3), True
+        along = -(t0 * d0 + t1 * d1 - (t0 * n0 + t1 * n1) / n2 * rise) / m   # the push along the path (FT . n = 0)
+        return along - mu * max(fe3, 0.0), fe12 + abs(fe3), True
     return fe12 - mu * max(fe3, 0.0), fe12 + abs(fe3), True
 
 
@@ -237,13 +272,13 @@ def footpad_force(geo, cells, i, mem, shape, P0, sliding, hold, mu_s, mu_d, r, R
     h0 = fe12 - mu_d * max(fe3, 0.0)
     if h0 <= 0.0:                                               # static limit exceeded, dynamic one not
         return 1, power, alpha, beta, psi, 1.0, 0.0, 0.0
-    return _slide(geo, cells, i, mem, shape, P0, mu_d, r, R, v, w, P, defl, frc, rte, X, tol, fe1, fe2, fe12, h0)
+    return _slide(geo, cells, i, mem, shape, P0, mu_d, r, R, v, w, P, defl, frc, rte, X, tol, fe1, fe2, h0)
 
 
 @njit(cache=True)
-def _slide(geo, cells, i, mem, shape, P0, mu_d, r, R, v, w, P, defl, frc, rte, X, tol, fe1, fe2, fe12, h0):
+def _slide(geo, cells, i, mem, shape, P0, mu_d, r, R, v, w, P, defl, frc, rte, X, tol, t0, t1, h0):
     """The slide: the footpad moved from P0 along the leg's push until FE12 = mu_D FE3 (see footpad_force)."""
-    d0, d1 = -fe1 / fe12, -fe2 / fe12                           # the leg's push on the footpad
+    d0, d1 = _push(t0, t1)                                      # the leg's push on the footpad
     # Expand until the excess changes sign or the footpad leaves the leg's reach: steps growing fourfold, or
     # just past the secant's root when that is nearer, so that the nearest crossing (the one continuous with
     # the held position) is not stepped over.
@@ -277,8 +312,9 @@ def _slide(geo, cells, i, mem, shape, P0, mu_d, r, R, v, w, P, defl, frc, rte, X
         step = 4.0 * (s_lo - s_prev)
     s_end, ok_hi = _refine(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_lo, h_lo, s_hi, h_hi, ok_hi, r, R, v, w, P,
                            defl, frc, rte, X, tol)
-    P[0], P[1], P[2] = P0[0] + s_end * d0, P0[1] + s_end * d1, P0[2]
-    fe12, fe3, fe1, fe2, power, alpha, beta, psi = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
+    _place(geo[9], P0, d0, d1, s_end, P)
+    fe12, fe3, t0, t1, power, alpha, beta, psi = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
     deficit = 0.0 if ok_hi else max(fe12 - mu_d * max(fe3, 0.0), 0.0) / cells[3][i, 0]
-    path = 0.5 * s_end * np.hypot(d0 + fe1 / fe12, d1 + fe2 / fe12) if fe12 > FLOOR else 0.0
+    e0, e1 = _push(t0, t1)
+    path = 0.5 * s_end * np.hypot(d0 - e0, d1 - e1) if fe12 > FLOOR else 0.0
     return 1, power, alpha, beta, psi, 1.0, deficit, path

@@ -67,7 +67,9 @@ class Controls:
     critical tip angle (nutation from the vertical), body clearance, quiescence (fraction of the
     first-contact momentum held for `taus` periods of `period` seconds; off when taus = 0), the time from
     which the energy criterion of eq. 89-95 may end the run as stable (None: never), whether bottoming ends
-    the run and whether free flight is flown in closed form."""
+    the run, whether free flight is flown in closed form, the first step and the grazing band (m): a leg that has
+    just touched down lifts off only once its main cell is this far short of its set, where it carries no force
+    (landing_kernel._events; converged results do not depend on it)."""
 
     t_final: float = 1.0
     rtol: float = 1e-6
@@ -84,6 +86,14 @@ class Controls:
     stop_on_bottoming: bool = True
     closed_form_flight: bool = True
     first_step: float = 1e-4
+    contact_band: float = lk.BAND
+
+    def __post_init__(self):
+        least = max(10.0 * lk.ARM, lk.GRAZE_SPEED * self.event_tol)
+        if not self.contact_band >= least:
+            raise ValueError(f"the grazing band must be at least {least:g} m: ten times the distance that re-arms a "
+                             f"leg's switch and what a footpad at {lk.GRAZE_SPEED:g} m/s crosses in event_tol, so that "
+                             "a leg cannot touch and leave within one located event")
 
 
 @dataclass
@@ -181,7 +191,8 @@ class _Run:
                                  float(ctl.stop_on_bottoming), np.cos(ctl.tip_angle), ctl.body_clearance,
                                  float(ctl.closed_form_flight and axisymmetric(scene.inertia)), ctl.quiet_fraction,
                                  ctl.taus, ctl.period,
-                                 -1.0 if ctl.energy_check_from is None else ctl.energy_check_from])
+                                 -1.0 if ctl.energy_check_from is None else ctl.energy_check_from,
+                                 ctl.contact_band])
         attach = np.array([leg.attach for leg in scene.legs])
         self.order = np.argsort(np.arctan2(attach[:, 1], attach[:, 0])).astype(np.int64)
         # The compiled functions' view of the landing, in landing_kernel.LANDING's order.
@@ -220,8 +231,8 @@ class _Run:
 
 def initial_state(scene: Scene, run: _Run) -> np.ndarray:
     """y0 with the CG placed so the lowest footpad touches the terrain at t = 0 (first contact by
-    construction, as FORCE shifts R(3) by XMIN); the lowest legs are marked to touch down (at zero, not BAND
-    inside the surface) as the compiled loop starts (landing_kernel.TOUCH)."""
+    construction, as FORCE shifts R(3) by XMIN); the lowest legs are marked to touch down as the compiled loop
+    starts (landing_kernel.TOUCH)."""
     R = quat_matrix(scene.q0)
     heights = run.heights(np.zeros(3), R)
     r0 = np.array([0.0, 0.0, -heights.min()])

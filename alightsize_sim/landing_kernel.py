@@ -21,12 +21,13 @@ from numba import njit
 from . import crush_cell
 from .borrow import borrowed
 from .bundle import bundler
-from .footpad_mass import (FACE, FLOOR, integrates_dampers, pad_event, pad_ground, pad_rates, pad_settle, pad_switch,
-                           sink_event)
+from .footpad_mass import (FACE, FLOOR, ground_event, integrates_dampers, pad_event, pad_ground, pad_rates, pad_settle,
+                           pad_switch)
 from .footpad_slip import contact_force, slides_by_position, slip_events
 from .rigid_body import free_flight, quat_matrix, quat_rate
 from .stability import hanging_margin, quiescence_momenta, quiescence_update, stable_by_energy, tipping_margins
-from .legs import free_footpad, leg_force, lift_shape, main_set, member_strike
+from .legs import TELESCOPING, free_footpad, leg_force, lift_shape, main_set, member_strike
+from .telescoping_leg import aim
 from .terrain import clearance
 from .vec3 import cross, mtv, mv
 
@@ -44,7 +45,7 @@ D = np.array([-12715105075 / 11282082432, 0, 87487479700 / 32700410799, -1069076
 END, BUFFER, BOTTOMED, TIPPED, BODY, QUIET, FAILED, STABLE, MEMBER = 0, 2, 3, 4, 5, 6, 7, 8, 9
 # Controls (float array).
 C_TFINAL, C_RTOL, C_ATOL, C_FIXED, C_MAXSTEP, C_EVENTTOL, C_STOPBOTTOM, C_TIPCOS, C_CLEAR, C_FLIGHT, \
-    C_QUIET_FRAC, C_TAUS, C_PERIOD, C_ENERGY_T = range(14)
+    C_QUIET_FRAC, C_TAUS, C_PERIOD, C_ENERGY_T, C_BAND = range(15)
 # Counters (int array).
 K_STEPS, K_REJECTED, K_RHS, K_HIST, K_EVENTS, K_TRIALS = range(6)
 # Leg state columns of the work array mt: static margin, reach deficit, alpha, beta, psi, footpad path error, soil
@@ -57,10 +58,15 @@ S_H, S_QUIET, S_MOMENTUM, S_BOT_T, S_BOT_LEG, S_BOT_CELL, S_STRUCK, S_HANG = ran
 MAX_STALL = 100     # accepted steps in a row that do not advance time before the run is declared failed
 GTOL = 1e-12       # m: a contact event function this close above zero counts as there
 ARM = 1e-7          # m: a leg's next switch is armed once it is this far from its last one
-LOCKED = -1         # armed[i]: a leg that left at once on touching stays unarmed until it touches again
+LOCKED = -1         # armed[i]: a leg that left at once on touching, or at the edge of its reach still pushed beyond the
+                    # friction cone, touches again only the band past zero
+FRESH = -2          # armed[i]: a leg that has just touched down; leaving before a step longer than event_tol, LOCKED
+BANDED = -3         # armed[i]: a leg that left short of its set (the grazing band) touches again the band past zero
 TOUCH = 2           # armed[i]: a leg placed on the surface before the run, which touches down as the run starts
-BAND = 1e-4         # m: an unarmed leg switches only this far past zero (grazing contact never chatters)
-FACE_GAP = 1e-3     # m: an armed footpad touching down this far above the surface under it met a vertical face
+BAND = 1e-4         # m: the default grazing band (ctl[C_BAND]): an unarmed leg on the ground lifts off only this far
+                    # past zero, where it carries no force (grazing contact never chatters); see _events
+GRAZE_SPEED = 50.0  # m/s: the band must take a footpad this fast more than event_tol to cross (Controls)
+FACE_GAP = 1e-3     # m: a footpad touching down this far above the surface under it met a vertical face
 PATH_FLOOR = 100.0  # event_tol: steps this short or shorter skip the footpad path error (_error_norm)
 
 # Compiled functions that only compiled code calls (they take bundles, which Python cannot build): no Python or C
@@ -182,7 +188,7 @@ def _rhs(S, y, dy, W):
     Pt, Xt = W.Pt, W.Xt
     R = quat_matrix(y[6:10])
     power = _legs(S, W, y, R)
-    power += pad_rates(S.mu, S.cells, S.mem, contact, S.sliding, Xt, W.dt, W.ft, W.rt, power, R, y, dy)
+    power += pad_rates(S.mu, S.cells, S.mem, contact, S.sliding, Xt, W.dt, W.ft, W.rt, power, R, y, dy, S.geo[9])
     F0 = F1 = F2 = M0 = M1 = M2 = 0.0
     for i in range(len(contact)):
         if contact[i]:
@@ -210,11 +216,16 @@ def rhs(arrays, y, dy, work):
 def _events(S, y, W, g, band):
     """Event functions g ((3 + 2C) n); an event is a crossing of zero from above. g[i]: leg i's free footpad height
     (in the air) or main-cell compression beyond its set less the reach deficit (on the ground, from the leg
-    state dt, mt already computed at y); an unarmed leg's threshold sits `band` past zero (BAND; 0.0 for the
-    raw values, a float so that numba compiles one version, not one per literal flag), so a footpad
-    grazing the terrain stays put at zero force until it clearly leaves instead of switching every step.
-    Not so for a footpad slid to the edge of its reach (deficit > 0): it still carries force, beyond the
-    friction cone, so it leaves at once.
+    state dt, mt already computed at y). An unarmed leg on the ground lifts off only `band` past zero (ctl[C_BAND];
+    0.0 for the raw values, a float so that numba compiles one version, not one per literal flag): its main cell
+    is then short of its set, where it carries no force, so a footpad grazing the terrain stays put at zero force
+    until it clearly leaves instead of switching every step. Not so for a footpad slid to the edge of its reach
+    (deficit > 0): it still carries force, beyond the friction cone, so it leaves at once. A leg in the air keeps
+    the shape it left with, its footpad where it left the terrain. One that left at its set touches down at zero
+    (GTOL past it, above the round-off of that footpad's height), with its cells as they were in the air; one that
+    left the band short of its set (BANDED) touches only the band past zero, where its main cell is back at its
+    set: either way re-contact brings no force step, and results do not depend on the band. A LOCKED leg (one that
+    left at once on touching) touches only `band` past zero too.
     g[n + i]: a sticking footpad's static margin mu_S FE3 + FLOOR - FE12 (N) when stick-to-slip is an event (for
     footpads with mass, a sliding one's distance from its Karnopp band, m/s), else the constant 1. g[2n + i]: a
     footpad's soil event (footpad_mass: R(s) + FLOOR - FE3 while the soil holds it, its sinking rate while it
@@ -234,8 +245,13 @@ def _events(S, y, W, g, band):
         else:
             foot = free_footpad(geo, cells, i, mem[i], shape[i], y[0:3], R)
             g[i] = foot[2] - pad_ground(mu, y, i, n, geo[9], foot[0], foot[1])
-        if not (armed[i] > 0 or (contact[i] and mt[i, 1] > 0.0)):
+        if contact[i]:
+            if armed[i] <= 0 and mt[i, 1] <= 0.0:
+                g[i] += band
+        elif armed[i] == LOCKED or armed[i] == BANDED:
             g[i] += band
+        elif armed[i] == 0:
+            g[i] += min(band, GTOL)
         g[n + i] = mt[i, 0] if located and contact[i] else 1.0
         g[2 * n + i] = mt[i, 6] if contact[i] else 1.0
         for j in range(C):
@@ -317,7 +333,7 @@ def _commit(S, y, W, g):
     C = mem.shape[1]
     started = False
     for i in range(len(contact)):
-        if armed[i] == 0 and g[i] > ARM:
+        if (armed[i] == 0 or armed[i] == BANDED) and g[i] > ARM:
             armed[i] = 1
         if not contact[i]:
             continue
@@ -326,8 +342,8 @@ def _commit(S, y, W, g):
             P[i, c], shape[i, c] = Pt[i, c], mt[i, 2 + c]
         sliding[i] = slt[i]
         if mt[i, 0] < 0.0:          # eq. 33: a held footpad past mu_S slides (with mass: a band crossing missed)
-            started = pad_event(mu, y, i, P, sliding, Xt) or started
-        elif pad_settle(mu, y, i, P, sliding, Xt):
+            started = pad_event(mu, y, i, P, sliding, Xt, geo[9]) or started
+        elif pad_settle(mu, y, i, P, sliding, Xt, geo[9]):
             started = True
         for j in range(1 + geo[5][i]):
             m = cn[i, j]
@@ -376,26 +392,36 @@ def _switch(S, y, which, W):
     armed, last = S.armed, S.last
     dt, ft, Xt, rt = W.dt, W.ft, W.Xt, W.rt
     R = quat_matrix(y[6:10])
-    was_armed = armed[which] > 0
-    armed[which] = 0
+    locked, fresh = armed[which] == LOCKED or armed[which] == BANDED, armed[which] == FRESH
+    armed[which] = FRESH
     C = mem.shape[1]
     v = (y[3], y[4], y[5])
     if contact[which]:
         _, alpha, beta, psi = _leg_force_call(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R,
                                               v, y[10:13], dt[which], ft[which], rt[which], Xt[which])
         contact[which] = 0
+        if fresh or W.mt[which, 1] > 0.0:       # left on touching, or at the edge of its reach still pushed: LOCKED
+            armed[which] = LOCKED
+        else:
+            armed[which] = BANDED if dt[which, 0] < main_set(cells, which, mem[which]) else 0
         pad_switch(mu, y, which, P, sliding, False, Xt, R, geo[9])
         shape[which, 0], shape[which, 1], shape[which, 2] = lift_shape(geo, cells, which, mem[which], alpha, beta, psi,
                                                                        dt[which, 0], y[0:3], R)
+        if geo[7][which] == TELESCOPING:
+            _clear(S, y, which, R)
         last[which, 2 * C] = 0.0
     else:
         pad = free_footpad(geo, cells, which, mem[which], shape[which], y[0:3], R)
         top = pad_ground(mu, y, which, len(contact), geo[9], pad[0], pad[1])
         # A footpad touching down on the surface sits on it; one whose clearance jumped (swept into a step's
-        # riser or a box's side) is caught on that face where it is and held there until it lifts off. An
-        # unarmed footpad touches only BAND inside the surface (located within BAND / 2 below 50 m/s at the
-        # default event_tol): still above it, it met a face at the surface.
-        on_face = pad[2] - top > (FACE_GAP if was_armed else -0.5 * BAND)
+        # riser or a box's side) is caught on that face where it is and held there until it lifts off. A LOCKED or
+        # BANDED footpad touches only the band inside the surface (located within half of it below 50 m/s at the
+        # default event_tol and band): still above it, it met a face at the surface.
+        band = S.ctl[C_BAND]
+        on_face = pad[2] - top > (-0.5 * band if locked else FACE_GAP)
+        if on_face and geo[7][which] == TELESCOPING and shape[which, 2] < 0.0:
+            shape[which, 2] = 0.0       # one that left short of its set is caught at its set, the band from leaving
+            pad = free_footpad(geo, cells, which, mem[which], shape[which], y[0:3], R)
         P[which, 0], P[which, 1], P[which, 2] = pad[0], pad[1], pad[2] if on_face else top
         contact[which] = 1
         sliding[which] = FACE if on_face else 1                 # (re)contact slides on mu_D (eq. 33)
@@ -405,6 +431,19 @@ def _switch(S, y, which, W):
         for j in range(C):
             last[which, j], last[which, C + j] = dt[which, j], 0.0
         last[which, 2 * C] = 1.0
+
+
+@_inner
+def _clear(S, y, i, R):
+    """A telescoping leg lifting off with its footpad below the ground under it (one caught in the corner of its
+    hole in the soil and a rock's foot) is aimed in the air at the ground straight above its footpad, so that its
+    touchdown can be found (it lands again with that much more compression: the depth, a few millimetres)."""
+    foot = free_footpad(S.geo, S.cells, i, S.mem[i], S.shape[i], y[0:3], R)
+    gap = foot[2] - pad_ground(S.mu, y, i, len(S.contact), S.geo[9], foot[0], foot[1])
+    if gap < 0.0:
+        above = (foot[0], foot[1], foot[2] - gap)
+        S.shape[i, 0], S.shape[i, 1], S.shape[i, 2] = aim(S.geo, S.cells, i, S.mem[i], above, y[0:3], R)
+
 
 
 @njit(cache=True)
@@ -565,7 +604,7 @@ def _guide(S, W, T, y, h, j, tol, flight):
         else:
             _dense(y, y1, K, h, m / h, yt)
         _legs(S, W, yt, quat_matrix(yt[6:10]))
-        _events(S, yt, W, gm, BAND)
+        _events(S, yt, W, gm, S.ctl[C_BAND])
         k = _first(g_prev, gm)
         if k >= 0:
             if k != j:
@@ -603,7 +642,7 @@ def _on_extension(S, T, W_lo, y, h, s):
     ys = T.y_lo
     _dense(y, T.y1, T.K, h, s / h, ys)
     _legs(S, W_lo, ys, quat_matrix(ys[6:10]))
-    _events(S, ys, W_lo, T.g_lo, BAND)
+    _events(S, ys, W_lo, T.g_lo, S.ctl[C_BAND])
     return _first(T.g_prev, T.g_lo) < 0
 
 
@@ -649,6 +688,7 @@ def run(arrays, y, t, history, scratch):
     mass, gravity, mu, mem, contact, P, sliding, armed = S.mass, S.gravity, S.mu, S.mem, S.contact, S.P, S.sliding, \
         S.armed
     ctl, cnt, run_state = S.ctl, S.cnt, S.run_state
+    band = ctl[C_BAND]
     n = mem.shape[0]
     Pt, slt, Xt = W.Pt, W.slt, W.Xt
     for i in range(n):
@@ -660,7 +700,7 @@ def run(arrays, y, t, history, scratch):
         _copy1(H.dy[0], K[0])
         cnt[K_HIST] = 1
     cnt[K_RHS] += 1
-    _events(S, y, W, g_prev, BAND)
+    _events(S, y, W, g_prev, band)
     weight = mass * np.sqrt(gravity[0] ** 2 + gravity[1] ** 2 + gravity[2] ** 2)
     fixed = ctl[C_FIXED] > 0.0
     h = ctl[C_FIXED] if fixed else run_state[S_H]
@@ -682,7 +722,7 @@ def run(arrays, y, t, history, scratch):
                 cnt[K_REJECTED] += 1
                 h *= _shrink(e)
                 continue
-        _events(S, y1, W, g1, BAND)
+        _events(S, y1, W, g1, band)
         j = _first(g_prev, g1)
         if j >= 0:
             # The earliest event: located first on the step's continuous extension (_guide); the step is
@@ -729,7 +769,7 @@ def run(arrays, y, t, history, scratch):
                     e_trial = _error_norm(S, y, y1, err, W, weight, mid)
                     if not e_trial <= 1.0:                 # the trial step itself fails the error test
                         break
-                _events(S, y1, W, g1, BAND)
+                _events(S, y1, W, g1, band)
                 k = _first(g_prev, g1)
                 newton += 1
                 if k >= 0:
@@ -769,6 +809,10 @@ def run(arrays, y, t, history, scratch):
         if stalled > MAX_STALL:
             return FAILED, t
         t += h_acc
+        if h_acc > ctl[C_EVENTTOL]:                    # a step past event_tol: legs that touched are no longer FRESH
+            for i in range(n):
+                if armed[i] == FRESH:
+                    armed[i] = 0
         _copy1(y, y1)
         qn = np.sqrt(y[6] ** 2 + y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
         for c in range(6, 10):
@@ -778,9 +822,9 @@ def run(arrays, y, t, history, scratch):
         if forced >= 3 * n:
             cell_event(S.cells, S.cev, forced, n)
         elif forced >= 2 * n:
-            changed = sink_event(mu, y, forced - 2 * n, sliding)
+            changed = ground_event(mu, y, forced - 2 * n, sliding, S.geo[9])
         elif forced >= n:
-            changed = pad_event(mu, y, forced - n, P, sliding, Xt)
+            changed = pad_event(mu, y, forced - n, P, sliding, Xt, S.geo[9])
         k = cnt[K_HIST]                                # record as committed (a switching leg: before it)
         if k > 0 and t <= H.t[k - 1]:
             k -= 1                                     # an event at the start of a step replaces its record
@@ -799,10 +843,10 @@ def run(arrays, y, t, history, scratch):
                     P[i, 0], P[i, 1], P[i, 2] = Pt[i, 0], Pt[i, 1], Pt[i, 2]
         _copy1(H.dy[k], K[0])
         cnt[K_HIST] = k + 1
-        _events(S, y, W, g_prev, BAND)
+        _events(S, y, W, g_prev, band)
         # A footpad that is out of reach from the start (a touchdown or slide start leaving it beyond the
         # friction cone at the edge of its reach) never crosses zero from above: it leaves now.
-        # It stays unarmed until it touches again (BAND past zero), whatever its height: a touchdown is located
+        # It stays LOCKED until it touches again (the band past zero), whatever its height: a touchdown is located
         # to within event_tol, so the footpad may hang above the terrain by more than ARM, and re-arming it
         # there would let it touch and leave again at the same instant.
         for i in range(n):
@@ -812,7 +856,7 @@ def run(arrays, y, t, history, scratch):
                 _rhs(S, y, K[0], W)
                 cnt[K_RHS] += 1
                 _copy1(H.dy[k], K[0])
-                _events(S, y, W, g_prev, BAND)
+                _events(S, y, W, g_prev, band)
         if fixed:
             h = ctl[C_FIXED]
         elif flight:

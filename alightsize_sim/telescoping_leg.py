@@ -135,15 +135,27 @@ def footpad_at(geo, i, length, alpha, beta, r, R):
 def free_footpad(geo, cells, i, mem, shape, r, R):
     """Unloaded footpad in terrain axes (eq. 13): length rho less the axial permanent set, at the tilt the
     leg had when it last left the ground; shape = (alpha, beta, held), held the axial compression beyond the
-    set the leg still had as it left (lift_shape), which it keeps in the air."""
+    set the leg had as it left (lift_shape), which it keeps in the air."""
     return footpad_at(geo, i, geo[2][i] - axial_set(cells, i, mem) - shape[2], shape[0], shape[1], r, R)
 
 
 @njit(cache=True)
+def aim(geo, cells, i, mem, T, r, R):
+    """Free shape (alpha, beta, held) of leg i whose footpad is at T (terrain axes): free_footpad's inverse."""
+    attach, L = geo[0], geo[1]
+    b0, b1, b2 = mtv(R, T[0] - r[0], T[1] - r[1], T[2] - r[2])
+    d0, d1, d2 = mtv(L[i], b0 - attach[i, 0], b1 - attach[i, 1], b2 - attach[i, 2])     # leg axes (eq. 16)
+    horiz = np.sqrt(d0 * d0 + d1 * d1)
+    return (np.arctan2(horiz, -d2), np.arctan2(d1, d0) if horiz > 0.0 else 0.0,
+            geo[2][i] - axial_set(cells, i, mem) - np.sqrt(horiz * horiz + d2 * d2))   # eq. 17-20
+
+
+@njit(cache=True)
 def lift_shape(geo, cells, i, mem, alpha, beta, psi, main, r, R):
-    """Stored free geometry of a leg lifting off at tilt (alpha, beta) with axial deflection `main`: the tilt and
-    the compression beyond its set it still held (zero unless the lift-off was located at a jump of its event
-    function, a slide leaving the leg's reach), so that its free footpad starts where it left the terrain, not
-    below it, and its touchdown can be found (psi, r, R unused: the articulated leg's interface)."""
-    return alpha, beta, max(main - axial_set(cells, i, mem), 0.0)
+    """Stored free geometry of a leg lifting off at tilt (alpha, beta) with axial deflection `main` (psi, r, R unused:
+    the articulated leg's interface): the tilt and the compression beyond its set it still held, so that its free
+    footpad starts where it left the terrain, not below it, and its touchdown can be found. That compression is
+    zero at a lift-off located where the leg goes slack, positive at a jump of its event function (a slide leaving
+    the leg's reach), negative for a leg leaving the grazing band short of its set (it keeps its length)."""
+    return alpha, beta, main - axial_set(cells, i, mem)
 

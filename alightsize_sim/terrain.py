@@ -4,7 +4,8 @@ The ground is the plane z = 0 shifted by steps, with rocks (hemispheres, boxes) 
 on it. Steps add: a point on the raised side of several steps is raised by the sum of their heights (a down
 step, height < 0, lowers its side). On that base, the surface is the union of the height field (the plane
 where there is none) and every rock: the highest of them at each point. Rocks and the height field are thus
-measured from the local base, so a rock on the upper side of a step sits on the step.
+measured from the local base, so a rock on the upper side of a step sits on the step. A hemisphere stands on the
+ground at FOOT (85 deg): past the radius where its slope reaches that, its foot is the cone tangent to it there.
 
 `pack` turns a Terrain into the arrays the compiled functions take:
 steps (k, 5): x, y, cos, sin of the direction, height; hemispheres (k, 3): x, y, radius;
@@ -26,6 +27,8 @@ from numba import njit
 
 PLANE, STEP, HEMISPHERE, BOX, HEIGHT_FIELD = -1, 0, 1, 2, 3
 FIELD_HEAD = 6
+FOOT = 85.0                                      # deg: slope of a hemisphere's foot, where it meets the ground
+FOOT_SIN, FOOT_COS = float(np.sin(np.radians(FOOT))), float(np.cos(np.radians(FOOT)))
 
 
 @dataclass(frozen=True)
@@ -41,7 +44,7 @@ class Step:
 
 @dataclass(frozen=True)
 class Hemisphere:
-    """A rock: a hemisphere of radius (m) centred at (x, y) on the base."""
+    """A rock: a hemisphere of radius (m) centred at (x, y) on the base, on its conical foot (FOOT)."""
 
     x: float
     y: float
@@ -159,17 +162,11 @@ def _field(row, x: float, y: float):
 
 
 @njit(cache=True)
-def _top(packed, x: float, y: float):
-    """(z, n0, n1, n2, kind, index) of the surface at (x, y): height, unit normal, the feature on top."""
-    steps, hemispheres, boxes, field = packed
-    base, kind, index, near = 0.0, PLANE, -1, np.inf
-    for i in range(steps.shape[0]):
-        s = steps[i, 2] * (y - steps[i, 1]) - steps[i, 3] * (x - steps[i, 0])   # distance left of the edge
-        h = steps[i, 4]
-        if s > 0.0 or (s == 0.0 and h > 0.0):                       # the shifted side; the edge goes with the upper
-            base += h
-            if s < near:                                            # the nearest edge names the step
-                kind, index, near = STEP, i, s
+def _relief(packed, x: float, y: float):
+    """(z, n0, n1, n2, kind, index) of the continuous relief on the base at (x, y): the highest of the height field
+    (the plane where there is none) and the hemispheres, its unit normal and which it is (PLANE, -1 where neither)."""
+    _, hemispheres, _, field = packed
+    kind, index = PLANE, -1
     z, n0, n1, n2 = 0.0, 0.0, 0.0, 1.0
     if field.shape[0] > 0:
         inside, zf, zx, zy = _field(field[0], x, y)
@@ -179,10 +176,34 @@ def _top(packed, x: float, y: float):
     for i in range(hemispheres.shape[0]):
         dx, dy, r = x - hemispheres[i, 0], y - hemispheres[i, 1], hemispheres[i, 2]
         d2 = dx * dx + dy * dy
-        if d2 < r * r:
-            zh = np.sqrt(r * r - d2)                                # sphere z = sqrt(r^2 - d^2)
+        if d2 < (r / FOOT_SIN) ** 2:
+            if d2 <= (r * FOOT_SIN) ** 2:
+                zh = np.sqrt(r * r - d2)                            # sphere z = sqrt(r^2 - d^2), radial normal
+                m0, m1, m2 = dx / r, dy / r, zh / r
+            else:                                                   # its foot: the cone tangent to it at FOOT
+                d = np.sqrt(d2)
+                zh = (r / FOOT_SIN - d) * FOOT_SIN / FOOT_COS
+                m0, m1, m2 = FOOT_SIN * dx / d, FOOT_SIN * dy / d, FOOT_COS
             if zh > z:
-                z, n0, n1, n2, kind, index = zh, dx / r, dy / r, zh / r, HEMISPHERE, i   # radial normal
+                z, n0, n1, n2, kind, index = zh, m0, m1, m2, HEMISPHERE, i
+    return z, n0, n1, n2, kind, index
+
+
+@njit(cache=True)
+def _top(packed, x: float, y: float):
+    """(z, n0, n1, n2, kind, index) of the surface at (x, y): height, unit normal, the feature on top."""
+    steps, _, boxes, _ = packed
+    base, kind, index, near = 0.0, PLANE, -1, np.inf
+    for i in range(steps.shape[0]):
+        s = steps[i, 2] * (y - steps[i, 1]) - steps[i, 3] * (x - steps[i, 0])   # distance left of the edge
+        h = steps[i, 4]
+        if s > 0.0 or (s == 0.0 and h > 0.0):                       # the shifted side; the edge goes with the upper
+            base += h
+            if s < near:                                            # the nearest edge names the step
+                kind, index, near = STEP, i, s
+    z, n0, n1, n2, k, j = _relief(packed, x, y)
+    if k != PLANE:
+        kind, index = k, j
     for i in range(boxes.shape[0]):
         dx, dy = x - boxes[i, 0], y - boxes[i, 1]
         a, b = boxes[i, 2] * dx + boxes[i, 3] * dy, boxes[i, 2] * dy - boxes[i, 3] * dx   # along, across the yaw
@@ -207,9 +228,31 @@ def surface(packed, x: float, y: float):
 
 
 @njit(cache=True, inline="always")
+def relief(packed, x: float, y: float):
+    """(c, n0, n1, n2): height above the base of the continuous relief at (x, y), the highest of the height field and
+    the hemispheres (0 where neither), and its unit outward normal ((0, 0, 1) on flat parts). A footpad sliding on
+    the ground follows it; steps and boxes, whose faces are vertical, it does not."""
+    if packed[1].shape[0] == 0 and packed[3].shape[0] == 0:
+        return 0.0, 0.0, 0.0, 1.0
+    c, n0, n1, n2, _, _ = _relief(packed, x, y)
+    return c, n0, n1, n2
+
+
+@njit(cache=True, inline="always")
 def clearance(packed, p0: float, p1: float, p2: float) -> float:
     """Vertical clearance p2 - height(p0, p1) of the point p."""
     return p2 - height(packed, p0, p1)
+
+
+@njit(cache=True)
+def foot_distance(packed, x: float, y: float) -> float:
+    """Horizontal distance from (x, y) to where the nearest hemisphere meets the ground, negative within one (at most
+    1 m: an event function's value away from rocks)."""
+    hemispheres = packed[1]
+    d = 1.0
+    for i in range(hemispheres.shape[0]):
+        d = min(d, np.hypot(x - hemispheres[i, 0], y - hemispheres[i, 1]) - hemispheres[i, 2] / FOOT_SIN)
+    return d
 
 
 @njit(cache=True)

@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from alightsize_sim.terrain import (BOX, HEIGHT_FIELD, HEMISPHERE, PLANE, STEP, Box, HeightField, Hemisphere, Step,
-                                    Terrain, clearance, features_along, features_at, height, is_plane, pack,
+from alightsize_sim.terrain import (BOX, FOOT, HEIGHT_FIELD, HEMISPHERE, PLANE, STEP, Box, HeightField, Hemisphere,
+                                    Step, Terrain, clearance, features_along, features_at, height, is_plane, pack,
                                     random_feature, surface)
 
 EXACT = 1e-12           # closed forms evaluated in a few flops of values O(1): round-off is ~1e-15
@@ -57,17 +57,24 @@ def test_steps_add():
 
 
 def test_hemisphere_height_and_radial_normal():
+    """The sphere z = sqrt(r^2 - d^2) with its radial normal up to where its slope reaches FOOT (85 deg), at
+    d = r sin(FOOT); its foot beyond is the cone tangent to it there, z = (r / sin(FOOT) - d) tan(FOOT), down to the
+    ground at d = r / sin(FOOT); the plane beyond. Both closed forms to round-off."""
     c, r = np.array([0.4, -0.3]), 0.5
     packed = pack(Terrain(hemispheres=(Hemisphere(*c, r),)))
+    s, k = np.sin(np.radians(FOOT)), np.cos(np.radians(FOOT))
     rng = np.random.default_rng(1)
-    for _ in range(200):
-        d = r * np.sqrt(rng.uniform(0, 0.999))
-        p = c + d * np.array([np.cos(t := rng.uniform(0, 2 * np.pi)), np.sin(t)])
-        z, *n = surface(packed, *p)
-        assert z == pytest.approx(np.sqrt(r * r - d * d), abs=EXACT)
-        radial = np.array([p[0] - c[0], p[1] - c[1], z]) / r
-        assert np.max(np.abs(np.array(n) - radial)) < EXACT and features_at(packed, *p) == (HEMISPHERE, 0)
-    assert surface(packed, c[0] + r, c[1]) == (0.0, 0.0, 0.0, 1.0)     # the rim: the plane
+    for _ in range(400):
+        d = r / s * np.sqrt(rng.uniform(0, 0.999))
+        u = np.array([np.cos(t := rng.uniform(0, 2 * np.pi)), np.sin(t)])
+        z, *n = surface(packed, *(c + d * u))
+        if d <= r * s:
+            zc, nc = np.sqrt(r * r - d * d), np.array([*(d * u), np.sqrt(r * r - d * d)]) / r
+        else:
+            zc, nc = (r / s - d) * s / k, np.array([*(s * u), k])
+        assert z == pytest.approx(zc, abs=EXACT)
+        assert np.max(np.abs(np.array(n) - nc)) < EXACT and features_at(packed, *(c + d * u)) == (HEMISPHERE, 0)
+    assert surface(packed, c[0] + r / s + 1e-12, c[1]) == (0.0, 0.0, 0.0, 1.0)     # beyond the foot: the plane
     assert surface(packed, c[0], c[1] + 0.6) == (0.0, 0.0, 0.0, 1.0)
 
 

@@ -11,8 +11,10 @@ from alightsize.common.errors import InputError
 from alightsize.common.resources import data_dir
 from alightsize.landings.random_landings import random_landing
 from alightsize.model.scene_config import read_scene
-from alightsize_sim.landing import simulate
+import alightsize_sim.landing_kernel as lk
+from alightsize_sim.landing import G0, _Run, initial_state, kinetic, simulate
 from alightsize_sim.landing_kernel import FACE_GAP
+from alightsize_sim.rigid_body import quat_matrix
 from alightsize_sim.terrain import Box, Hemisphere, Step, Terrain, height, pack
 
 SCENES = data_dir("examples") / "affdl-tr-66-33" / "scenes"
@@ -134,3 +136,51 @@ def test_a_free_footpad_swept_into_a_box_base_at_ground_level_is_caught_on_the_f
     scene = random_landing(base.scene, 20261121, k, True)
     res = simulate(scene, dataclasses.replace(base.controls, t_final=1.0))
     assert res.status != "failed" and res.energy["closure_rel"] < 1e-4
+
+
+ROCK = 0.1                                  # m: radius of the rock under leg 1 (its height)
+
+
+@pytest.mark.parametrize("offset", [0.0, 0.6, 0.98, 1.02], ids=["top", "flank", "edge", "off"])
+@pytest.mark.parametrize("mass", [0.0, 2.26796], ids=["massless", "5 lb"])
+def test_a_footpad_on_a_rocks_flank_slides_off_or_holds_and_the_body_stays_clear(flat, offset, mass):
+    """The flat drop at 4 m/s down and 0.5 m/s toward leg 1, friction 0.5 / 0.3, with a 0.1 m rock whose centre is
+    `offset` radii beyond leg 1's footpad (on its top, on its flank, at its edge, just off it), massless and 5 lb
+    footpads. A footpad on the flank slides down it or is held as friction and its slope say, and never enters
+    the rock or the ground: checked every 10 ms, each footpad on the ground is on or above the surface under it
+    (1e-9 m: round-off of the relief's height) and each free one above it (by the grazing band, where it touches).
+    The landing settles (energy criterion) on all four legs. Energy rules out body contact: three legs stroking to
+    the end of their 30 kN plateau take more work than the landing brings falling that far, and that fall is short
+    of the body point's clearance over the rock (asserted from the scene's numbers), so the body cannot touch
+    while the legs carry the capsule. Before, at the edge and just off, the footpad slid at its touchdown
+    height into the rock's rising flank, its leg lifted off inside the rock and never touched again, and the
+    capsule rolled onto its body at 1.4 s. Energy closes within 1e-6 for massless footpads (integration error
+    only) and 1e-4 with mass (the bound of the footpad-mass tests above: their Karnopp band's transients), and the
+    footpad-terrain interface takes energy, never gives it (within the closure)."""
+    scene = dataclasses.replace(flat.scene, terrain=Terrain(hemispheres=(Hemisphere(0.8 + offset * ROCK, 0.0, ROCK),)),
+                                mu_static=0.5, mu_dynamic=0.3, v0=np.array([0.5, 0.0, -4.0]), footpad_mass=mass,
+                                body_points=np.array([[0.0, 0.0, -0.55]]))
+    ctl = dataclasses.replace(flat.controls, t_final=1.5, rtol=1e-6, atol=1e-9, max_step=2e-3, energy_check_from=0.05)
+    run = _Run(scene, ctl)
+    y = initial_state(scene, run)
+    packed = pack(scene.terrain)
+    cell = scene.legs[0].axial.curve
+    plateau, ramp, end = cell.force[2], cell.deflection[1], cell.deflection[2]
+    # Three legs stroking to their plateau's end take more than the landing brings falling that far: the CG stops
+    # short of it, above the fall that brings the body point (which tilting only raises) to the rock's height.
+    assert 3 * plateau * (end - ramp) > kinetic(scene, y) + scene.mass * G0 * end and end < y[2] - 0.55 - ROCK
+    t, status = 0.0, lk.END
+    for stop in np.arange(0.01, ctl.t_final + 1e-9, 0.01):
+        run.ctl_arr[lk.C_TFINAL] = stop
+        status, t = run.loop(y, t)
+        on = run.contact == 1
+        gaps = run.P[:, 2] - np.array([height(packed, *p[:2]) for p in run.P])
+        assert np.all(gaps[on] >= -1e-9), (t, gaps, run.contact)
+        assert np.all(run.heights(y[0:3], quat_matrix(y[6:10]))[~on] >= -ctl.contact_band - 1e-9), t
+        if status != lk.END:
+            break
+    assert status == lk.STABLE and np.all(run.contact == 1)
+    res = simulate(scene, ctl)
+    assert res.status == "stable" and np.all(res.contact[-1] == 1)
+    assert res.energy["closure_rel"] < (1e-6 if mass == 0.0 else 1e-4)
+    assert res.energy["friction_J"] >= -1e-6 * res.energy["initial_J"]

@@ -19,7 +19,7 @@ from scipy import integrate, optimize
 
 from alightsize_sim import landing_kernel as lk
 from alightsize_sim.articulated_leg import ArticulatedLeg
-from alightsize_sim.footpad_mass import sink_event
+from alightsize_sim.footpad_mass import ground_event
 from alightsize_sim.landing import Controls, Result, _Run, accel_g, initial_state, simulate
 
 from alightsize.common.atomic import write_atomic
@@ -140,7 +140,7 @@ def scipy_landing(cfg: SceneConfig, ctl: Controls, method: str) -> tuple[dict, i
         if which >= 3 * n:
             lk.cell_event(run.cells, run.cev, which, n)
         elif which >= 2 * n:
-            sink_event(run.mu, yy, which - 2 * n, run.sliding)
+            ground_event(run.mu, yy, which - 2 * n, run.sliding, run.geo[9])
         elif 0 <= which < n:
             lk.switch(run.arrays, yy, which, work)
         if which >= 0 or started:

@@ -16,6 +16,7 @@ import numpy as np
 
 from alightsize_sim.crush_cell import CellModel
 from alightsize_sim.landing import G0, Controls, Scene
+from alightsize_sim.landing_kernel import GRAZE_SPEED
 from alightsize_sim.rigid_body import matrix_quat
 from alightsize_sim.articulated_leg import ArticulatedLeg
 from alightsize_sim.telescoping_leg import TelescopingLeg
@@ -469,6 +470,9 @@ def _controls(node: Node | None, mass: float, legs: list[TelescopingLeg | Articu
         raise node.error("taus", "a number of periods >= 0", f"{taus}")
     if rtol >= 1:
         raise node.error("rtol", "a relative tolerance below 1", f"{rtol}")
+    if event_tol > d.contact_band / GRAZE_SPEED:
+        raise node.error("event_tol", f"a time of at most {d.contact_band / GRAZE_SPEED:g} s (the grazing band "
+                         f"{d.contact_band:g} m at {GRAZE_SPEED:g} m/s)", f"{event_tol:g} s")
     period = float(np.pi * np.sqrt(mass / legs[0].cells[0].k))    # TAU = pi sqrt(M / SLOPE(1)) (FUNEV, line 6692)
     return Controls(t_final=t_final, rtol=rtol, atol=atol, fixed_step=fixed, max_step=max_step, event_tol=event_tol,
                     tip_angle=tip, taus=taus, period=period, stop_on_bottoming=stop, energy_check_from=energy_t,
