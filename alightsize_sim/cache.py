@@ -20,6 +20,7 @@ import os
 import shutil
 from functools import cache
 from pathlib import Path
+from typing import Any
 
 import numba
 from numba.core import caching as _caching
@@ -28,9 +29,14 @@ from platformdirs import user_cache_dir
 
 _FOLDERS: set[Path] = set()
 
-# numba 0.59-0.60 spell the classes with a leading underscore
-_UserProvided = getattr(_caching, "UserProvidedCacheLocator", None) or _caching._UserProvidedCacheLocator
-_Impl = getattr(_caching, "CacheImpl", None) or _caching._CacheImpl
+
+def _numba_class(name: str) -> Any:
+    """A class of numba's caching module (earlier numba versions spell it with a leading underscore)."""
+    return getattr(_caching, name, None) or getattr(_caching, f"_{name}")
+
+
+_UserProvided: Any = _numba_class("UserProvidedCacheLocator")
+_Impl: Any = _numba_class("CacheImpl")
 
 
 def cache_root() -> Path:
@@ -65,7 +71,7 @@ class _Locator(_UserProvided):
 
     @classmethod
     def from_function(cls, py_func, py_file: str):
-        if _config.CACHE_DIR or not os.path.exists(py_file):
+        if getattr(_config, "CACHE_DIR", None) or not os.path.exists(py_file):     # set at run time by numba
             return None
         folder = Path(py_file).resolve().parent
         if folder not in _FOLDERS:

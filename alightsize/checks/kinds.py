@@ -202,7 +202,7 @@ def _direct_step(load: float, area: float, label: str = "Compressive stress", sy
 
 def _compression(p, s: Section, mat: Material, mode="compression", label="Compressive stress") -> Outcome:
     step = _direct_step(p["P"], s.area(), label, "σ")
-    fy = mat.yield_strength
+    fy = mat.value("yield_strength")
     return Outcome(mode, p["P"], step.value, fy, stress.design_factor(fy, step.value), (step,))
 
 
@@ -432,7 +432,7 @@ def _equivalent_step(sr: float, st: float, theory: str, where: str) -> Step:
 
 def _verdict(eq: float, load: float, mat: Material, steps: list[Step], theory: str) -> Outcome:
     """App. IV's shear stress against Fcy/2, or an equivalent stress against Fcy; f from magnitudes."""
-    fy = mat.yield_strength
+    fy = mat.value("yield_strength")
     allow = stress.shear_allowable(fy) if theory == "app_iv" else fy
     if theory == "app_iv":
         steps.append(Step("Shear allowable", "τallow", "{Fcy} / 2", (("Fcy", fy, "stress"),), allow, "stress"))
@@ -705,7 +705,7 @@ def out_of_range(check: Check, section: Section, material: Material) -> tuple[st
         if p["t"] is not None and p["t"] >= r:
             return "wall", f"a wall below the tube's outside radius {_length(r)}", _length(p["t"])
         own = _own_wall(p, section)
-        problem = _local_range(p, own, 1 / material.poisson_m)
+        problem = _local_range(p, own, 1 / material.value("poisson_m"))
         if problem:
             return ("wall" if p["t"] is not None else "section.wall",
                     "a wall in the range of the local-buckling formula", f"{_length(own.wall)} ({problem})")

@@ -349,7 +349,8 @@ def read_scene(path: str | Path, overrides: dict[str, object] | None = None) -> 
     cells_node.finish()
     leg_specs = _legs(root.table("legs"), cell_nodes)
     models = {k: _cell(n) for k, n in cell_nodes.items()}
-    legs, names = [], []
+    legs: list[TelescopingLeg | ArticulatedLeg] = []
+    names: list[tuple[str, ...]] = []
     for spec in leg_specs:
         f = spec["factors"]
         if spec["kind"] == "articulated":
