@@ -77,7 +77,8 @@ def test_a_check_heading_names_its_failure_mode_once():
 
 def _inside_and_apart(fig) -> None:
     """Every axes (with its labels, ticks and title) lies inside the saved figure and overlaps no other."""
-    renderer = fig.canvas.get_renderer()
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    renderer = FigureCanvasAgg(fig).get_renderer()
     boxes = [ax.get_tightbbox(renderer) for ax in fig.axes]
     page = fig.bbox
     for box in boxes:
@@ -89,10 +90,15 @@ def _inside_and_apart(fig) -> None:
 
 
 def _kept(monkeypatch) -> list:
-    """The figures pyplot is asked to close, kept for inspection."""
-    import matplotlib.pyplot as plt
+    """The figures saved, in order, kept for inspection."""
+    from matplotlib.figure import Figure
     figs: list = []
-    monkeypatch.setattr(plt, "close", figs.append)
+    save = Figure.savefig
+
+    def keep(fig, *args, **kwargs):
+        figs.append(fig)
+        return save(fig, *args, **kwargs)
+    monkeypatch.setattr(Figure, "savefig", keep)
     return figs
 
 
