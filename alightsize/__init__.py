@@ -13,9 +13,15 @@ The Python API (the CLI is a thin layer over it)::
 
 from __future__ import annotations
 
+from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
 
-__version__ = "0.1.0"
+__all__ = ["__version__", "design", "read_design", "read_lander", "write_design"]
+
+try:
+    __version__ = version("alightsize")
+except PackageNotFoundError:                           # run from a source tree without installing
+    __version__ = "0+unknown"
 
 
 def read_lander(path: str | Path):

@@ -1,5 +1,5 @@
-"""Command line: `alightsize design | audit | loads | simulate | sweep | synthesize | bench | scale | reports` (see docs/contracts.md). Exit 0 ok, 1 check failed,
-2 bad input, 3 internal error."""
+"""Command line: `alightsize design | audit | loads | simulate | sweep | synthesize | bench | scale | reports`
+(see docs/contracts.md). Exit 0 ok, 1 check failed, 2 bad input, 3 internal error."""
 
 from __future__ import annotations
 
@@ -75,7 +75,8 @@ def _simulate(args) -> int:
     res = simulate(cfg.scene, cfg.controls)
     files = write_landing(cfg, res, Path(args.out))
     s = summary(cfg, res)
-    print(f"{cfg.name}: {s['outcome']} at {s['t_end_s']:.4f} s ({s['reason']}); peak XDD(3) {s['peak']['xdd_g'][2]:.2f} g; "
+    print(f"{cfg.name}: {s['outcome']} at {s['t_end_s']:.4f} s ({s['reason']}); "
+          f"peak XDD(3) {s['peak']['xdd_g'][2]:.2f} g; "
           f"energy closure {s['energy']['closure_rel']:.2e}; {res.steps} steps, {res.rhs_evals} evaluations, "
           f"{res.wall_s * 1e3:.1f} ms")
     print("wrote " + ", ".join(str(f) for f in files))
@@ -89,9 +90,9 @@ def _sweep(args) -> int:
     study = read_study(args.study)
     out = Path(args.out)
     backend, workers = _backend(args)
-    print(f"{study.name}: {len(study.runs)} runs -> {out / 'runs.sqlite'} ({backend}"
-          f"{'' if backend == 'serial' else f', {workers or os.cpu_count()} workers' if not args.scheduler else f' at {args.scheduler}'})",
-          flush=True)
+    where = ("" if backend == "serial" else f" at {args.scheduler}" if args.scheduler
+             else f", {workers or os.cpu_count()} workers")
+    print(f"{study.name}: {len(study.runs)} runs -> {out / 'runs.sqlite'} ({backend}{where})", flush=True)
     try:
         stats = run_sweep(study, out, backend, workers, args.scheduler, quiet=args.quiet)
     except KeyboardInterrupt:

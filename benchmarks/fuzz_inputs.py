@@ -160,7 +160,8 @@ def _mutations(value: Any, in_table: bool) -> dict[str, Callable[[Callable], Any
             muts["sign"] = lambda pick: number[1:] + " " + unit if number[0] == "-" else "-" + value.strip()
             muts["magnitude"] = lambda pick: f"{pick(MAG_TEXT + [repr(float(number) * 1e30)])} {unit}"
             muts["unit"] = lambda pick: f"{number} {pick(UNITS)}".strip()
-            muts["to number"] = lambda pick: pick([float(number), int(float(number)) if abs(float(number)) < 1e18 else 0])
+            muts["to number"] = lambda pick: pick([float(number),
+                                                   int(float(number)) if abs(float(number)) < 1e18 else 0])
     elif isinstance(value, list):
         muts["array"] = lambda pick: pick([[], value + value, value[1:], value[::-1], value[:1] * 100,
                                            value + [pick(OTHER)]])

@@ -51,13 +51,15 @@ def main() -> None:
     P, A, B = np.meshgrid(psi, np.asarray(cfg.grid.alpha), np.asarray(cfg.grid.beta), indexing="ij")
     af1, af2 = cell_forces(case, A, P)
     t_closed = _median_time(lambda: reactions(case.geometry, A, B, P, af1, af2), args.repeat)
-    t_matrix = _median_time(lambda: reactions(case.geometry, A, B, P, af1, af2, method="matrix"), max(1, args.repeat // 3))
+    t_matrix = _median_time(lambda: reactions(case.geometry, A, B, P, af1, af2, method="matrix"),
+                            max(1, args.repeat // 3))
     rc = reactions(case.geometry, A, B, P, af1, af2)
     rm = reactions(case.geometry, A, B, P, af1, af2, method="matrix")
     scale = np.maximum(np.maximum(af1, af2), 1.0)
-    diff = max(float(np.max(np.abs(getattr(rc, k) - getattr(rm, k)) / scale)) for k in ("F1", "F3", "Q1", "Q2", "R11", "R12"))
-    out = {"schema": "alightsize.landings.bench-loads/1", "machine": {"python": platform.python_version(), "numpy": np.__version__,
-                                                             "cores_used": 1},
+    diff = max(float(np.max(np.abs(getattr(rc, k) - getattr(rm, k)) / scale))
+               for k in ("F1", "F3", "Q1", "Q2", "R11", "R12"))
+    out = {"schema": "alightsize.landings.bench-loads/1",
+           "machine": {"python": platform.python_version(), "numpy": np.__version__, "cores_used": 1},
            "configuration": case.name, "positions": n, "envelope_wall_s": t_env,
            "positions_per_s": n / t_env, "reactions_closed_wall_s": t_closed, "reactions_matrix_wall_s": t_matrix,
            "closed_vs_matrix_max_rel": diff}

@@ -47,7 +47,8 @@ def main() -> None:
     ap.add_argument("--generations", type=int, default=3)
     ap.add_argument("--json")
     args = ap.parse_args()
-    synthesize(_budgeted(Path(tempfile.mkdtemp()), 0), Path(tempfile.mkdtemp()), trade=False, backend="serial")  # compile
+    # compile first
+    synthesize(_budgeted(Path(tempfile.mkdtemp()), 0), Path(tempfile.mkdtemp()), trade=False, backend="serial")
     rows = [one("pool", 2, args.generations), one("dask", 1, args.generations), one("dask", 2, args.generations)]
     for r in rows:
         print(f"{r['backend']:5s} {r['workers']} workers: {r['wall_s']:7.1f} s, {r['landings']:6d} landings, "

@@ -219,17 +219,22 @@ MAGNITUDE_ONLY = {("9", "RA"), ("9", "RB"), ("3457", "RA"), ("3457", "RB"), ("68
 # (configuration, member, sign) -> (corrected row, reason): positions (or values) that the other tables show
 # to be misprinted. Used only where a caller asks for corrected positions; TABLES stays as printed.
 SUSPECTED_MISPRINTS = {
-    ("3", "Q2", -1): (("Q2", -10_895, 20.0, +180.0, -15.0), "T14 psi +15 (and alpha 2): T15-T17, T20 print (20, 180, -15)"),
+    ("3", "Q2", -1): (("Q2", -10_895, 20.0, +180.0, -15.0),
+        "T14 psi +15 (and alpha 2): T15-T17, T20 print (20, 180, -15)"),
     ("4", "PU1", +1): (("PU1", +12_790, 20.0, +120.0, -15.0), "T15 alpha 2.0: T14, T17, T20 print 20"),
     ("5", "PU1", +1): (("PU1", +12_790, 20.0, +120.0, -15.0), "T16 alpha 2.0: T14, T17, T20 print 20"),
     ("5", "Q2", -1): (("Q2", -10_895, 20.0, +180.0, -15.0), "T16 alpha 2.0: T15, T17, T20 print 20"),
-    ("3457", "R1213", +1): (("R1213", +13_317, 1.0, 0.0, +30.0), "T21 prints config 6's 16,135; max of 3,4,5,7 is T16's"),
+    ("3457", "R1213", +1): (("R1213", +13_317, 1.0, 0.0, +30.0),
+        "T21 prints config 6's 16,135; max of 3,4,5,7 is T16's"),
     ("3457", "R123", +1): (("R123", +50_762, 1.0, 0.0, +30.0), "T21 prints config 6's 63,977; max of 3,4,5,7 is T16's"),
     ("3457", "Q1", +1): (("Q1", +36_322, 2.0, +180.0, -15.0), "T21 psi -13: the value is config 7's, at -15 (T18)"),
     ("3457", "Q1", -1): (("Q1", -29_420, 1.0, 0.0, +30.0), "T21 alpha 2.0: the value is config 5's, at alpha 1 (T16)"),
-    ("3457", "PL1", +1): (("PL1", +16_022, 1.0, -40.0, +30.0), "T21 alpha 2.0: the value is config 5's, at alpha 1 (T16)"),
-    ("3457", "PU1", +1): (("PU1", +12_974, 20.0, +120.0, -20.0), "T21 alpha 2.0: the value is config 7's, at alpha 20 (T18)"),
-    ("68", "Q2", -1): (("Q2", -10_895, 20.0, +180.0, -15.0), "T22 prints config 8's -10,601; config 6's -10,895 is larger"),
+    ("3457", "PL1", +1): (("PL1", +16_022, 1.0, -40.0, +30.0),
+        "T21 alpha 2.0: the value is config 5's, at alpha 1 (T16)"),
+    ("3457", "PU1", +1): (("PU1", +12_974, 20.0, +120.0, -20.0),
+        "T21 alpha 2.0: the value is config 7's, at alpha 20 (T18)"),
+    ("68", "Q2", -1): (("Q2", -10_895, 20.0, +180.0, -15.0),
+        "T22 prints config 8's -10,601; config 6's -10,895 is larger"),
 }
 
 # ------------------------------------------------------------------ cell force-deflection curves, l. 924-1073

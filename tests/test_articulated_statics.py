@@ -19,8 +19,8 @@ NAMES = ("F1", "F2", "F3", "Q1", "Q2", "R11", "R12", "R13", "RA", "RB")
 
 def _random(n, seed):
     rng = np.random.default_rng(seed)
-    return (rng.uniform(0, np.radians(45), n), rng.uniform(-np.pi, np.pi, n), rng.uniform(np.radians(-30), np.radians(30), n),
-            rng.uniform(1e4, 6e5, n), rng.uniform(1e4, 6e5, n))
+    return (rng.uniform(0, np.radians(45), n), rng.uniform(-np.pi, np.pi, n),
+            rng.uniform(np.radians(-30), np.radians(30), n), rng.uniform(1e4, 6e5, n), rng.uniform(1e4, 6e5, n))
 
 
 def test_matrix_and_closed_form_agree_at_10000_positions():
@@ -88,8 +88,10 @@ def test_envelopes_follow_the_scaling_laws():
     g = case.geometry._replace(**{k: L * getattr(case.geometry, k) for k in LENGTHS}, PLD=F * case.geometry.PLD,
                 SPRG=F / L * case.geometry.SPRG)
     scaled = replace(case, geometry=g,
-                     upper=CrushCurve(tuple(L * d for d in case.upper.deflection), tuple(F * f for f in case.upper.force)),
-                     lower=CrushCurve(tuple(L * d for d in case.lower.deflection), tuple(F * f for f in case.lower.force)))
+                     upper=CrushCurve(tuple(L * d for d in case.upper.deflection),
+                                      tuple(F * f for f in case.upper.force)),
+                     lower=CrushCurve(tuple(L * d for d in case.lower.deflection),
+                                      tuple(F * f for f in case.lower.force)))
     assert CFG.cases[-1].geometry.AU == pytest.approx(L * G.AU, rel=1e-15)          # config 9, as shipped
     for a, b in zip(envelope(case, CFG.grid), envelope(scaled, CFG.grid)):
         for e, s in ((a.tension, b.tension), (a.compression, b.compression)):

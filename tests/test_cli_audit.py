@@ -97,14 +97,18 @@ def test_audit_fails_when_a_wall_is_thinned(tmp_path):
 
 @pytest.mark.parametrize("edit, key, found", [
     (lambda t: t.replace('wall = "0.0675 in"', 'wal = "0.0675 in"'), 'item["Upper Truss"].section.wal', "unknown key"),
-    (lambda t: t.replace('load = "33784 lbf"', 'load = "33784 lb"', 1), 'item["Upper Truss"].check["compression"].load', "33784 lb"),
-    (lambda t: t.replace('length = "4.98 in"', 'length = "-4.98 in"', 1), 'item["Upper Truss"].check["column_buckling"].length', "-4.98 in"),
-    (lambda t: t.replace('length = "4.98 in"', 'lenght = "4.98 in"', 1), 'item["Upper Truss"].check["column_buckling"].lenght',
-     "'lenght' (did you mean 'length'?)"),
-    (lambda t: t.replace('wall = "0.0675 in" }', 'wall = "0.0675 in", inertai = "0.4 in^4" }', 1), 'item["Upper Truss"].section.inertai',
-     "unknown key 'inertai' (did you mean 'inertia'?)"),
-    (lambda t: t.replace('material = "be-31al"', 'material = "unobtainium"', 1), 'item["Upper Truss"].material', "unobtainium"),
-    (lambda t: t.replace('kind = "compression"', 'kind = "compresion"', 1), 'item["Upper Truss"].check["compresion"].kind', "compresion"),
+    (lambda t: t.replace('load = "33784 lbf"', 'load = "33784 lb"', 1),
+     'item["Upper Truss"].check["compression"].load', "33784 lb"),
+    (lambda t: t.replace('length = "4.98 in"', 'length = "-4.98 in"', 1),
+     'item["Upper Truss"].check["column_buckling"].length', "-4.98 in"),
+    (lambda t: t.replace('length = "4.98 in"', 'lenght = "4.98 in"', 1),
+     'item["Upper Truss"].check["column_buckling"].lenght', "'lenght' (did you mean 'length'?)"),
+    (lambda t: t.replace('wall = "0.0675 in" }', 'wall = "0.0675 in", inertai = "0.4 in^4" }', 1),
+     'item["Upper Truss"].section.inertai', "unknown key 'inertai' (did you mean 'inertia'?)"),
+    (lambda t: t.replace('material = "be-31al"', 'material = "unobtainium"', 1),
+     'item["Upper Truss"].material', "unobtainium"),
+    (lambda t: t.replace('kind = "compression"', 'kind = "compresion"', 1),
+     'item["Upper Truss"].check["compresion"].kind', "compresion"),
     (lambda t: t.replace("[design]", "[design\n"), "", "syntax error"),
     (lambda t: t.replace("required_design_factor = 1.2", "required_design_factor = inf"),
      "audit.required_design_factor", "inf"),
@@ -169,7 +173,8 @@ def test_bench_of_an_unknown_scene_exits_2_listing_the_known_ones(tmp_path, caps
     assert not any(tmp_path.iterdir())
 
 
-# A 4130 steel rod in tension, printed too thin and sized by `design` (Fcy 180,000 psi, App. IV): f = Fcy pi d^2 / (4 P).
+# A 4130 steel rod in tension, printed too thin and sized by `design` (Fcy 180,000 psi, App. IV):
+# f = Fcy pi d^2 / (4 P).
 ROD = """
 [design]
 configuration = "rod"

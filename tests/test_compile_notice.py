@@ -1,7 +1,11 @@
 """The one line a first run prints while numba compiles, and nothing once compiled."""
 
 import io
+import os
+import subprocess
+import sys
 
+import pytest
 from numba import njit
 
 from alightsize.common.compile_notice import compile_notice
@@ -23,3 +27,58 @@ def test_a_compilation_is_announced_once_and_timed():
     with compile_notice(quiet):
         assert twice(4.0) == 8.0                     # already compiled: no compilation event
     assert quiet.getvalue() == ""
+
+
+KERNEL = '''from numba import njit
+
+from alightsize_sim.cache import register
+
+register(__file__)
+
+
+@njit(cache=True)
+def twice(x):
+    return {factor} * x
+'''
+
+RUN = ("import sys; sys.path.insert(0, sys.argv[1]); from alightsize.common.compile_notice import compile_notice\n"
+       "with compile_notice():\n"
+       "    import kernel; print(kernel.twice(1.5))")
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="platformdirs follows XDG_CACHE_HOME on Linux only")
+def test_a_cached_kernel_is_announced_on_its_first_run_only_and_cached_outside_the_package(tmp_path):
+    """A registered module's kernel compiles once (the notice) and loads silently from the user cache folder
+    after; nothing lands beside the module; new sources compile again and replace the old cache."""
+    src, cache = tmp_path / "src", tmp_path / "cache"
+    src.mkdir()
+    env = {k: v for k, v in os.environ.items() if k != "NUMBA_CACHE_DIR"}
+    env.update(XDG_CACHE_HOME=str(cache), PYTHONDONTWRITEBYTECODE="1")
+
+    def run():
+        out = subprocess.run([sys.executable, "-c", RUN, str(src)], env=env, capture_output=True, text=True, check=True)
+        return out.stdout.strip(), out.stderr
+
+    (src / "kernel.py").write_text(KERNEL.format(factor="2.0"))
+    first, second = run(), run()
+    assert first[0] == second[0] == "3.0"
+    assert "compiling" in first[1] and second[1] == ""           # the second run loads the first's machine code
+    assert [p.name for p in src.iterdir()] == ["kernel.py"]
+    digests = list((cache / "alightsize").glob("numba-*/src-*/*"))
+    assert len(digests) == 1 and any(digests[0].glob("kernel.twice-*.nbi"))
+    (src / "kernel.py").write_text(KERNEL.format(factor="3.0"))
+    third = run()
+    assert third[0] == "4.5" and "compiling" in third[1]
+    now = list((cache / "alightsize").glob("numba-*/src-*/*"))
+    assert len(now) == 1 and now != digests                      # the earlier sources' cache removed
+
+
+def test_a_user_numba_cache_dir_wins(tmp_path):
+    """With NUMBA_CACHE_DIR set, numba caches there as it documents, and the user cache folder is not used."""
+    src, numba_dir, cache = tmp_path / "src", tmp_path / "numba", tmp_path / "cache"
+    src.mkdir()
+    (src / "kernel.py").write_text(KERNEL.format(factor="2.0"))
+    env = {**os.environ, "NUMBA_CACHE_DIR": str(numba_dir), "XDG_CACHE_HOME": str(cache),
+           "PYTHONDONTWRITEBYTECODE": "1"}
+    subprocess.run([sys.executable, "-c", RUN, str(src)], env=env, capture_output=True, check=True)
+    assert any(numba_dir.rglob("kernel.twice-*.nbi")) and not cache.exists()

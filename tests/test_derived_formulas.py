@@ -23,7 +23,8 @@ def test_johnson_meets_euler_at_the_transition():
 
 
 def test_knockdown_hand_value_and_limit():
-    """SP-8007 eq. 4 at r/t = 100: phi = 0.625, gamma = 1 - 0.901 (1 - e^-0.625) (hand value, 1e-12); -> 1 as r/t -> 0."""
+    """SP-8007 eq. 4 at r/t = 100: phi = 0.625, gamma = 1 - 0.901 (1 - e^-0.625) (hand value, 1e-12); -> 1 as
+    r/t -> 0."""
     assert stress.thin_wall_knockdown(100.0) == pytest.approx(1 - 0.901 * (1 - exp(-0.625)), rel=1e-12)
     assert stress.thin_wall_knockdown(0.0) == 1.0
 

@@ -91,7 +91,7 @@ def test_a_design_whose_landings_fail_their_criteria_does_not_pass(design, rende
     assert stdout.startswith("3457: FAIL: ") and f"{len(failing)} of 24 landings fail their criteria" in stdout
     result = html.split("Result:")[1].split("</p>")[0]
     assert 'class="fail"' in result and "PASS" not in result
-    assert [l["criteria_ok"] for l in summary["landings"]] == [_meets_sec_ii(r) for r in design.landings.rows]
+    assert [case["criteria_ok"] for case in summary["landings"]] == [_meets_sec_ii(r) for r in design.landings.rows]
 
 
 def test_the_report_defines_every_landing_and_names_the_governing_one(design, rendered):
@@ -182,7 +182,8 @@ def test_the_first_screen_names_the_landing_nearest_each_criterion(design, rende
     _, stdout, page, summary = rendered
     rows = design.landings.rows
     margins = {m["criterion"]: m for m in summary["landing_margins"]}
-    for name, col, caps in (("acceleration", "peak_xdd{}_g", SEC_II_G), ("onset", "peak_onset_xdd{}_g_s", SEC_II_ONSET)):
+    for name, col, caps in (("acceleration", "peak_xdd{}_g", SEC_II_G),
+                            ("onset", "peak_onset_xdd{}_g_s", SEC_II_ONSET)):
         each = [1 - max(r[col.format(i)] / caps[i - 1] for i in (1, 2, 3)) for r in rows]
         k = min(range(len(rows)), key=each.__getitem__)
         assert margins[name]["run_id"] == rows[k]["run_id"]

@@ -141,7 +141,8 @@ def _mismatches(shipped, ours, tight, path="") -> list[str]:
     if isinstance(shipped, list):
         if not len(shipped) == len(ours) == len(tight):
             return [f"{path}: {len(shipped)} items != {len(ours)}"]
-        return [m for j, (a, b, c) in enumerate(zip(shipped, ours, tight)) for m in _mismatches(a, b, c, f"{path}[{j}]")]
+        return [m for j, (a, b, c) in enumerate(zip(shipped, ours, tight))
+                for m in _mismatches(a, b, c, f"{path}[{j}]")]
     if isinstance(shipped, float) and isinstance(ours, float):
         floor = (1e-3 if ".srs_" in path else 1e-6) * abs(ours) + 1e-12
         return [] if abs(shipped - ours) <= 4 * abs(ours - tight) + floor else [f"{path}: {shipped!r} != {ours!r}"]

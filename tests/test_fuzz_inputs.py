@@ -33,7 +33,8 @@ def tree(tmp_path_factory) -> Tree:
     root = tmp_path_factory.mktemp("fuzz")
     for folder in ("examples", "materials"):
         shutil.copytree(ROOT / folder, root / folder)
-    sources = {rel: tomllib.loads((ROOT / rel).read_text(encoding="utf-8")) for k in fuzz.KINDS for rel in fuzz.files(k)}
+    sources = {rel: tomllib.loads((ROOT / rel).read_text(encoding="utf-8"))
+               for k in fuzz.KINDS for rel in fuzz.files(k)}
     return Tree(root=root, sources=sources, baseline={})
 
 

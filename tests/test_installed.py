@@ -30,8 +30,14 @@ def installed(tmp_path_factory):
     return site, wheel
 
 
+def _env(site: Path) -> dict[str, str]:
+    """The install alone on the path; numba's cache in the scratch folder's user cache (not the user's)."""
+    env = {k: v for k, v in os.environ.items() if k != "NUMBA_CACHE_DIR"}
+    return {**env, "PYTHONPATH": str(site), "PYTHONSAFEPATH": "1", "XDG_CACHE_HOME": str(site.parent / "cache")}
+
+
 def _run(site: Path, cwd: Path, *args: str) -> subprocess.CompletedProcess:
-    env = {**os.environ, "PYTHONPATH": str(site), "PYTHONSAFEPATH": "1"}
+    env = _env(site)
     return subprocess.run([sys.executable, "-m", "alightsize", *args], cwd=cwd, env=env, capture_output=True, text=True,
                           timeout=900)
 
@@ -57,7 +63,7 @@ def ran(installed, tmp_path_factory):
     shipped = site / "alightsize" / "_data" / "examples" / "affdl-tr-66-33"
     where = subprocess.run([sys.executable, "-c", "import alightsize, alightsize_sim; print(alightsize.__file__); "
                             "print(alightsize_sim.__file__)"], cwd=tmp_path, capture_output=True, text=True,
-                           env={**os.environ, "PYTHONPATH": str(site), "PYTHONSAFEPATH": "1"}, check=True)
+                           env=_env(site), check=True)
     assert all(Path(p).is_relative_to(site) for p in where.stdout.split())
     study = tmp_path / "study.toml"
     study.write_text(f'[study]\nname = "tiny"\nseed = 1\nsamples = 2\n\n[scenes]\n2 = "{shipped}/scenes/'
@@ -86,6 +92,14 @@ def test_every_command_runs_from_the_installed_wheel(ran):
         assert (cwd / output).stat().st_size > 0, args
     assert json.loads((cwd / "b" / "bench.json").read_text())["schema"] == "alightsize.bench/1"
     assert {p.name for p in (cwd / "r").iterdir()} >= {"telescoping", "articulated_3457", "drops"}
+
+
+def test_the_installed_commands_write_nothing_into_the_package(installed, ran):
+    """numba's compiled code goes to the user cache folder, never into the installed packages."""
+    site, _ = installed
+    assert not [p for p in site.rglob("*") if p.suffix in (".nbi", ".nbc")]
+    if sys.platform.startswith("linux"):                          # platformdirs follows XDG_CACHE_HOME there
+        assert any((site.parent / "cache" / "alightsize").rglob("*.nbi"))
 
 
 def test_the_bench_times_every_case_alike_and_states_its_spread(ran):

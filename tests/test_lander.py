@@ -152,7 +152,8 @@ def test_crushing_force_change_reaches_landings_envelopes_and_checks(tmp_path):
     ({"[members.swivel_pin]": "[members.swivel]"}, "members.swivel"),
     ({', lug_material = "7178-t6" }': " }"}, "members.swivel_pin.pin.lug_material"),
     ({"lug_thickness": "lug_thicknes"}, "members.swivel_pin.pin.lug_thicknes"),
-    ({'vertical_speed = ["1 m/s", "3 m/s"]': 'vertical_speed = ["3 m/s", "1 m/s"]'}, "requirements.envelope.vertical_speed"),
+    ({'vertical_speed = ["1 m/s", "3 m/s"]': 'vertical_speed = ["3 m/s", "1 m/s"]'},
+     "requirements.envelope.vertical_speed"),
     ({'load_radius = "10 mm"': 'load_radius = "10 kg"'}, "load_radius"),
     ({"[structure]\n": "[structure]\nbearing = 1\n"}, "structure"),
     ({'slope = "12 deg"': 'slope = ["0 deg", "-12 deg"]'}, "requirements.envelope.slope"),
@@ -217,7 +218,10 @@ def test_1966_lander_files_reproduce_their_design_configs(name):
     old = run_design(prepare(alightsize.read_design(examples / f"{name}.toml")))
     spec = alightsize.read_lander(examples / "landers" / f"{name}.toml").spec
     new = run_design(prepare(replace(spec, landings=None)))
-    key = lambda r: (r.item.name, r.index, r.outcome.mode, r.outcome.factor, r.outcome.stress, r.outcome.allowable)
+
+    def key(r):
+        return r.item.name, r.index, r.outcome.mode, r.outcome.factor, r.outcome.stress, r.outcome.allowable
+
     assert [key(r) for r in new.records] == [key(r) for r in old.records]
     assert [(w.label, w.count, w.each) for w in new.weights] == [(w.label, w.count, w.each) for w in old.weights]
     assert new.checks_ok == old.checks_ok

@@ -359,6 +359,7 @@ def test_a_footpad_lighter_than_its_range_exits_2(tmp_path, capsys, mass):
     text = open(f"{SCENES}/articulated_config5_slope35_footpads.toml").read()
     bad = tmp_path / "bad.toml"
     bad.write_text(text.replace('footpad_mass = "5 lb"', f"footpad_mass = {mass}").replace(
-        'base = "articulated_config5_slope35.toml"', f'base = "{Path(SCENES).resolve()}/articulated_config5_slope35.toml"'))
+        'base = "articulated_config5_slope35.toml"',
+        f'base = "{Path(SCENES).resolve()}/articulated_config5_slope35.toml"'))
     assert main(["simulate", str(bad), "--out", str(tmp_path / "o")]) == 2
     assert "legs.footpad_mass" in capsys.readouterr().err

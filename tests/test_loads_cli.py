@@ -59,7 +59,8 @@ def _copy_examples(tmp_path):
 
 
 def _upper_truss_load(summary):
-    return next(c["load_N"] for c in summary["audit"]["checks"] if c["item"] == "Upper Truss" and c["check"] == "compression")
+    return next(c["load_N"] for c in summary["audit"]["checks"]
+                if c["item"] == "Upper Truss" and c["check"] == "compression")
 
 
 def test_design_follows_a_changed_cell_force(tmp_path):

@@ -1,6 +1,8 @@
 """Packaging: the simulator ships under the project's own name and imports nothing of the toolkit; the
 documents the README and docs name are in the repository."""
 
+import importlib.util
+import os
 import re
 import subprocess
 import sys
@@ -49,3 +51,55 @@ def test_ci_runs_the_readme_test_command_verbatim():
                 if line.strip()]
     assert len(commands) == 2
     assert (ROOT / ".ci" / "run").read_text().strip().splitlines()[-1] == commands[1]
+
+
+def _files(*folders: Path) -> dict[str, int]:
+    """Every file and folder in the folders with its modification time (ns): a folder's changes when an entry is
+    made or removed in it."""
+    return {str(p): p.stat().st_mtime_ns for folder in folders for p in [folder, *folder.rglob("*")]}
+
+
+def test_importing_the_packages_writes_no_file(tmp_path):
+    """`import alightsize, alightsize_sim` in a fresh process leaves the package folders and the numba cache
+    folders as they were: no compiled-code cache, no folder made and removed. NUMBA_CACHE_DIR (set, then unset) and
+    the user cache folder point at empty scratch folders, which stay empty; Python's own bytecode cache is off."""
+    packages = [Path(importlib.util.find_spec(name).origin).parent for name in ("alightsize", "alightsize_sim")]
+    numba_dir, user_cache = tmp_path / "numba", tmp_path / "xdg"
+    numba_dir.mkdir()
+    user_cache.mkdir()
+    for numba_env in ({"NUMBA_CACHE_DIR": str(numba_dir)}, {}):
+        env = {k: v for k, v in os.environ.items() if k != "NUMBA_CACHE_DIR"}
+        env.update(numba_env, XDG_CACHE_HOME=str(user_cache), PYTHONDONTWRITEBYTECODE="1")
+        before = _files(*packages)
+        subprocess.run([sys.executable, "-c", "import alightsize, alightsize_sim"], env=env, check=True)
+        assert _files(*packages) == before
+        assert not any(numba_dir.iterdir()) and not any(user_cache.iterdir()), numba_env
+
+
+def test_no_module_imports_pyplot():
+    """Every module of both packages (but `python -m alightsize`) imported in one process: matplotlib.pyplot (a
+    global figure state and a backend switch) is never loaded, and the backend a user chose is left alone."""
+    code = ("import importlib, pkgutil, sys, matplotlib; matplotlib.use('svg')\n"
+            "import alightsize, alightsize_sim\n"
+            "for pkg in (alightsize, alightsize_sim):\n"
+            "    for m in pkgutil.walk_packages(pkg.__path__, pkg.__name__ + '.'):\n"
+            "        if not m.name.endswith('__main__'):\n"
+            "            importlib.import_module(m.name)\n"
+            "print(len(sys.modules), 'matplotlib.pyplot' in sys.modules, matplotlib.get_backend())")
+    count, pyplot, backend = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                                            check=True).stdout.split()
+    assert int(count) > 100 and pyplot == "False" and backend == "svg"
+
+
+def test_the_packages_ship_type_information():
+    """PEP 561 markers: both packages declare their type hints (the wheel takes every file of the packages)."""
+    wheel = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["hatch"]["build"]["targets"]["wheel"]
+    assert all((ROOT / p / "py.typed").is_file() for p in wheel["packages"])
+
+
+def test_the_sources_are_ruff_clean():
+    """pyproject.toml's ruff rules (pyflakes, pycodestyle, 120 columns) find nothing in the packages, tests and
+    benchmarks."""
+    run = subprocess.run([sys.executable, "-m", "ruff", "check", "--no-cache", "alightsize", "alightsize_sim", "tests",
+                          "benchmarks"], cwd=ROOT, capture_output=True, text=True)
+    assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]

@@ -101,7 +101,10 @@ def test_shipped_cell_curves_are_the_printed_ones():
 
 def test_fig_10_peg_leg_ratio_and_the_recorded_conflicts():
     g = read_loads(LOADS).cases[0].geometry
-    ratio = lambda a: lower_lever(g, a) / (g.AS * np.sin(a) + g.AL * np.cos(a))   # Fig. 10, lower curve
+
+    def ratio(a):                                              # Fig. 10, lower curve
+        return lower_lever(g, a) / (g.AS * np.sin(a) + g.AL * np.cos(a))
+
     # RECORDED: Fig. 10 starts at 0.35, but at alpha = 0 the ratio is AS/AL = 8/25 = 0.32 for any cell
     # attachment (the lever about the ring edge is AS, the tip lever AL).
     assert ratio(0.0) == pytest.approx(8 / 25, rel=1e-12)
@@ -115,7 +118,10 @@ def test_fig_10_peg_leg_ratio_and_the_recorded_conflicts():
     # 61,909 - 48,759 = 13,150 lbf, i.e. dR11/dAF1 = 0.365.
     a, p = np.radians(2), np.radians(30)
     c18, c20 = g.AS * np.sin(a) + g.AL * np.cos(a), g.AL * np.sin(a) - g.AS * np.cos(a)
-    slope = lambda s: c18 * s / (np.sin(p) * c20 + np.cos(p) * c18)
+
+    def slope(s):
+        return c18 * s / (np.sin(p) * c20 + np.cos(p) * c18)
+
     fig10, tables = slope(0.40 * np.cos(p)), 13_150 / 36_000
     assert abs(fig10 - tables) / tables > 0.2                  # the two printed sources conflict (0.48 vs 0.365)
     r1 = reactions(g, a, 0.0, p, 36_000 * LBF, 30_000 * LBF)
@@ -123,7 +129,10 @@ def test_fig_10_peg_leg_ratio_and_the_recorded_conflicts():
     model = (r2.R11 - r1.R11) / (36_000 * LBF)
     assert model == pytest.approx(slope(upper_lever(g, p)), rel=1e-12)       # eq. 59-61 closed form
     assert abs(model - tables) < abs(model - fig10)            # the shipped geometry follows the tables...
-    par = lambda d: upper_lever(g, np.radians(d)) / np.cos(np.radians(d))
+
+    def par(d):
+        return upper_lever(g, np.radians(d)) / np.cos(np.radians(d))
+
     assert abs(par(-30) - 0.55) > 0.02 and abs(par(30) - 0.40) > 0.02        # ...so Fig. 10 is missed
 
 

@@ -165,11 +165,13 @@ def _johnson_factor(p, od, t, length, e=34e6, fcy=74_000):
 # instead, and the report's conclusion that buckling does not govern is false for these three: f is below 1.2.
 BELOW_TRANSITION = {
     ("3457", "Lower Truss", "column_buckling"):
-        (_johnson_factor(19_532, 2.50, 0.0426, 46.1), "L/k 53.1: Euler 119,200 psi > Fcy; Johnson 62,510 psi, f = 1.05"),
+        (_johnson_factor(19_532, 2.50, 0.0426, 46.1),
+         "L/k 53.1: Euler 119,200 psi > Fcy; Johnson 62,510 psi, f = 1.05"),
     ("3457", "Peg Leg Strut", "column_buckling"):
         (_johnson_factor(50_800, 2.0, 0.144, 16), "L/k 24.4: Euler 564,400 psi > Fcy; Johnson 71,570 psi, f = 1.18"),
     ("9", "Upper Truss", "column_buckling"):
-        (_johnson_factor(6_340, 1.255, 0.0268, 22.6), "L/k 52.0: Euler 123,900 psi > Fcy; Johnson 62,950 psi, f = 1.03"),
+        (_johnson_factor(6_340, 1.255, 0.0268, 22.6),
+         "L/k 52.0: Euler 123,900 psi > Fcy; Johnson 62,950 psi, f = 1.03"),
 }
 
 

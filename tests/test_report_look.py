@@ -51,7 +51,8 @@ def test_a_given_value_is_not_stated_as_its_own_formula():
     from alightsize.reports.design_report import render_html, render_markdown
     from conftest import EXAMPLES
     res = run_design(read_design(EXAMPLES / "telescoping.toml"))
-    symbols = {s.symbol for w in res.weights for s in w.steps} | {s.symbol for r in res.records for s in r.outcome.steps}
+    symbols = ({s.symbol for w in res.weights for s in w.steps}
+               | {s.symbol for r in res.records for s in r.outcome.steps})
     for text in (render_html(res), render_markdown(res)):
         assert not [s for s in symbols if re.search(rf"(^|[ >|]){re.escape(s)} = {re.escape(s)}( |<|$)", text, re.M)]
 
@@ -76,21 +77,28 @@ def test_a_check_heading_names_its_failure_mode_once():
 
 def _inside_and_apart(fig) -> None:
     """Every axes (with its labels, ticks and title) lies inside the saved figure and overlaps no other."""
-    renderer = fig.canvas.get_renderer()
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    renderer = FigureCanvasAgg(fig).get_renderer()
     boxes = [ax.get_tightbbox(renderer) for ax in fig.axes]
     page = fig.bbox
     for box in boxes:
-        assert page.x0 - 0.5 <= box.x0 and box.x1 <= page.x1 + 0.5 and page.y0 - 0.5 <= box.y0 and box.y1 <= page.y1 + 0.5
+        assert page.x0 - 0.5 <= box.x0 and box.x1 <= page.x1 + 0.5
+        assert page.y0 - 0.5 <= box.y0 and box.y1 <= page.y1 + 0.5
     for i, a in enumerate(boxes):
         for b in boxes[i + 1:]:
             assert not (a.x0 < b.x1 - 1 and b.x0 < a.x1 - 1 and a.y0 < b.y1 - 1 and b.y0 < a.y1 - 1)
 
 
 def _kept(monkeypatch) -> list:
-    """The figures pyplot is asked to close, kept for inspection."""
-    import matplotlib.pyplot as plt
+    """The figures saved, in order, kept for inspection."""
+    from matplotlib.figure import Figure
     figs: list = []
-    monkeypatch.setattr(plt, "close", figs.append)
+    save = Figure.savefig
+
+    def keep(fig, *args, **kwargs):
+        figs.append(fig)
+        return save(fig, *args, **kwargs)
+    monkeypatch.setattr(Figure, "savefig", keep)
     return figs
 
 

@@ -94,7 +94,8 @@ def test_si_display_and_user_material(tmp_path):
     md = render_markdown(res)
     # 475.7 MPa = 69,000 psi to 4 figures, so the Peg Leg Cone factor is unchanged: 69,000/57,370 = 1.20.
     cone = next(r for r in res.records if r.item.name == "Peg Leg Cone")
-    assert cone.outcome.factor == pytest.approx(475.7e6 / (5852 * 4.4482216 / (10 * 0.101 ** 2 * 0.0254 ** 2)), rel=1e-6)
+    sigma = 5852 * 4.4482216 / (10 * 0.101 ** 2 * 0.0254 ** 2)
+    assert cone.outcome.factor == pytest.approx(475.7e6 / sigma, rel=1e-6)
     tables = [line for line in md.splitlines() if line.startswith("|")]
     assert any("475.7 MPa" in line for line in tables) and not any("psi" in line for line in tables)
     assert "My Al" in md

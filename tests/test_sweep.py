@@ -199,8 +199,8 @@ def test_sigkill_mid_sweep_loses_nothing_and_recomputes_nothing(tmp_path):
 
 
 def test_sweep_command_writes_the_contract_outputs(tmp_path):
-    """`alightsize sweep --dask-local 2` writes runs.sqlite, outcomes.json (probabilities with Wilson intervals summing to
-    the done runs), outcomes.xlsx and report.html; user text in the study is escaped in the report."""
+    """`alightsize sweep --dask-local 2` writes runs.sqlite, outcomes.json (probabilities with Wilson intervals
+    summing to the done runs), outcomes.xlsx and report.html; user text in the study is escaped in the report."""
     path = _study(tmp_path, samples=4)
     text = path.read_text().replace('name = "mc"', 'name = "mc"\ntitle = "<b>MC</b> =1+1"')
     path.write_text(text)

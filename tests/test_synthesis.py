@@ -86,8 +86,8 @@ def test_free_cell_parameters_and_crushable_weight():
     node = next(n for n in lander.spec.items if n.data["name"] == "Axial honeycomb")
     w = node.data["weight"]
     area, length = (float(w[k].split()[0]) for k in ("area", "length"))
-    assert area * length * hc.density == pytest.approx(hc.density * 12e3 * 0.6 / (hc.crush_strength * hc.stroke_fraction),
-                                                       rel=1e-12)
+    expected = hc.density * 12e3 * 0.6 / (hc.crush_strength * hc.stroke_fraction)
+    assert area * length * hc.density == pytest.approx(expected, rel=1e-12)
     # the report's own axial core: 3750 lbf over a 1.074 in diameter is the material's crush strength (0.1 %,
     # the printed strength is rounded to 4 digits)
     assert 3750 * 4.4482216 / (pi / 4 * (1.074 * 0.0254) ** 2) == pytest.approx(hc.crush_strength, rel=1e-3)

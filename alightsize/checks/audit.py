@@ -121,8 +121,9 @@ def junit_xml(cfg: DesignConfig, records: list[CheckRecord]) -> str:
         f = r.outcome.factor
         parts.append(f'  <testcase classname={quoteattr(cfg.configuration)} name={quoteattr(name)}>')
         if not r.ok:
-            msg = f"design factor {f:.4f} below required {r.required:.2f}" + (
-                f" (it reads {round(f, r.decimals):.{r.decimals}f} to {r.decimals} decimals)" if r.rounding_flips else "")
+            msg = f"design factor {f:.4f} below required {r.required:.2f}"
+            if r.rounding_flips:
+                msg += f" (it reads {round(f, r.decimals):.{r.decimals}f} to {r.decimals} decimals)"
             parts.append(f'    <failure message={quoteattr(msg)}>{escape(msg)}</failure>')
         parts.append('  </testcase>')
     parts.append('</testsuite>')

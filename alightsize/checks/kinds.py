@@ -202,7 +202,7 @@ def _direct_step(load: float, area: float, label: str = "Compressive stress", sy
 
 def _compression(p, s: Section, mat: Material, mode="compression", label="Compressive stress") -> Outcome:
     step = _direct_step(p["P"], s.area(), label, "σ")
-    fy = mat.yield_strength
+    fy = mat.value("yield_strength")
     return Outcome(mode, p["P"], step.value, fy, stress.design_factor(fy, step.value), (step,))
 
 
@@ -264,7 +264,8 @@ def _column(p, s, mat) -> Outcome:
                            tuple(steps))
     crit, which = stress.column_stress(e, fy, lk)
     ek = (("E", e, "stress"), ("Fcy", fy, "stress"))
-    steps += [Step("Slenderness", "L/k", "{L} / {k}", (("L", p["L"], "length"), ("k", k, "length")), lk, "dimensionless"),
+    steps += [Step("Slenderness", "L/k", "{L} / {k}", (("L", p["L"], "length"), ("k", k, "length")), lk,
+                   "dimensionless"),
               Step("Transition slenderness (Bruhn 1973 C2.4)", "(L/k)T", "π √(2 {E} / {Fcy})", ek, lt, "dimensionless"),
               Step("Critical column stress, Johnson parabola (L/k below the transition, where Euler's does not hold)",
                    "σcr", "{Fcy} - ({Fcy} / 2π)² ({L/k})² / {E}", ek + (("L/k", lk, "dimensionless"),), crit, "stress")
@@ -354,14 +355,15 @@ def _bearing(p, s, mat) -> Outcome:
     if lug is not None:
         fy = min(fy, lug.yield_strength)
         steps.append(Step(f"Bearing allowable: the weaker of {mat.name} and {lug.name}", "Fbr", "min({Fcy1}, {Fcy2})",
-                          (("Fcy1", mat.yield_strength, "stress"), ("Fcy2", lug.yield_strength, "stress")), fy, "stress"))
+                          (("Fcy1", mat.yield_strength, "stress"), ("Fcy2", lug.yield_strength, "stress")), fy,
+                          "stress"))
     return Outcome("bearing", load, sig, fy, stress.design_factor(fy, sig), tuple(steps))
 
 
 def _pin(p, s, mat) -> Outcome:
     load, lstep = _component_load(p["components"], "resultant")
-    steps = (lstep, Step("Double-shear allowable load", "Pallow", "{Pallow}", (("Pallow", p["allowable_load"], "force"),),
-                         p["allowable_load"], "force"))
+    steps = (lstep, Step("Double-shear allowable load", "Pallow", "{Pallow}",
+                         (("Pallow", p["allowable_load"], "force"),), p["allowable_load"], "force"))
     return Outcome("shear", load, None, None, stress.design_factor(p["allowable_load"], load), steps)
 
 
@@ -386,7 +388,8 @@ def _ring(p, s, mat) -> Outcome:
                          f"{stress.RING_MIN_R_OVER_C:g} (R = span / 2)")
     sig = stress.bending_stress(m, c, i)
     fy = mat.yield_strength
-    steps = (Step("Ring moment", "M", "|{P}| {L} / 4", (("P", p["P"], "force"), ("L", p["span"], "length")), m, "moment"),
+    steps = (Step("Ring moment", "M", "|{P}| {L} / 4", (("P", p["P"], "force"), ("L", p["span"], "length")), m,
+                  "moment"),
              Step("Bending stress", "σB", "{M} {c} / {I}",
                   (("M", m, "moment"), ("c", c, "length"), ("I", i, "second_moment")), sig, "stress"))
     return Outcome("bending", p["P"], sig, fy, stress.design_factor(fy, sig), steps)
@@ -396,8 +399,8 @@ def _cone(p, s, mat) -> Outcome:
     a = stress.cone_strip_area(p["t"])
     sig = stress.direct_stress(p["P"], a)
     fy = mat.yield_strength
-    steps = (Step("Tensile stress on a 10t strip", "σT", "{P} / (10 {t}²)", (("P", p["P"], "force"), ("t", p["t"], "length")),
-                  sig, "stress"),)
+    steps = (Step("Tensile stress on a 10t strip", "σT", "{P} / (10 {t}²)",
+                  (("P", p["P"], "force"), ("t", p["t"], "length")), sig, "stress"),)
     return Outcome("tension", p["P"], sig, fy, stress.design_factor(fy, sig), steps)
 
 
@@ -429,7 +432,7 @@ def _equivalent_step(sr: float, st: float, theory: str, where: str) -> Step:
 
 def _verdict(eq: float, load: float, mat: Material, steps: list[Step], theory: str) -> Outcome:
     """App. IV's shear stress against Fcy/2, or an equivalent stress against Fcy; f from magnitudes."""
-    fy = mat.yield_strength
+    fy = mat.value("yield_strength")
     allow = stress.shear_allowable(fy) if theory == "app_iv" else fy
     if theory == "app_iv":
         steps.append(Step("Shear allowable", "τallow", "{Fcy} / 2", (("Fcy", fy, "stress"),), allow, "stress"))
@@ -483,7 +486,8 @@ def _plate_range(p, s: Section) -> tuple[str, str, str] | None:
     if "p" in p:                                                   # eccentric load circle
         r = plates.equivalent_radius(r0, t) if p["r0_equivalent"] else r0
         if p["p"] + r > a:
-            expected = f"a load circle inside the plate, load_offset + load_radius at most the plate radius {_length(a)}"
+            expected = ("a load circle inside the plate, load_offset + load_radius at most the plate radius "
+                        f"{_length(a)}")
             return "load_offset", expected, f"{_length(p['p'])} + {_length(r)}" + (" (r0')" if r != r0 else "")
         return _thin_limit(p, t, a)
     if r0 > a:
@@ -633,7 +637,9 @@ def _plate_eccentric(p, s, mat) -> Outcome:
 
 
 # kind -> (reader of config parameters, evaluator, material properties it needs)
-KINDS: dict[str, tuple[Callable[[Node, Rules], dict], Callable[[dict, Section, Material], Outcome], tuple[str, ...]]] = {
+Reader = Callable[[Node, Rules], dict]
+Evaluator = Callable[[dict, Section, Material], Outcome]
+KINDS: dict[str, tuple[Reader, Evaluator, tuple[str, ...]]] = {
     "compression": (_read_load, _compression, ("yield_strength",)),
     "tension": (_read_load, _tension, ("yield_strength",)),
     "bending": (_read_moment, _bending, ("yield_strength",)),
@@ -699,7 +705,7 @@ def out_of_range(check: Check, section: Section, material: Material) -> tuple[st
         if p["t"] is not None and p["t"] >= r:
             return "wall", f"a wall below the tube's outside radius {_length(r)}", _length(p["t"])
         own = _own_wall(p, section)
-        problem = _local_range(p, own, 1 / material.poisson_m)
+        problem = _local_range(p, own, 1 / material.value("poisson_m"))
         if problem:
             return ("wall" if p["t"] is not None else "section.wall",
                     "a wall in the range of the local-buckling formula", f"{_length(own.wall)} ({problem})")

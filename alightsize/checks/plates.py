@@ -53,7 +53,8 @@ def hub_couple(moment: float, t: float, a: float, b: float, m: float, edge: str)
     if edge == "fixed":
         f = (a2 - b2) / (a2 + b2)
     else:
-        f = ((3 + nu) * a2 * a2 - 2 * (1 + nu) * a2 * b2 - (1 - nu) * b2 * b2) / ((3 + nu) * a2 * a2 + (1 - nu) * b2 * b2)
+        f = (((3 + nu) * a2 * a2 - 2 * (1 + nu) * a2 * b2 - (1 - nu) * b2 * b2)
+             / ((3 + nu) * a2 * a2 + (1 - nu) * b2 * b2))
     s = 3 * moment * f / (pi * b * t * t)
     return s, s / m
 
@@ -111,8 +112,9 @@ def annular_uniform_pressure(q: float, t: float, a: float, b: float, m: float, o
 
 def supported_uniform_load(w_total: float, t: float, a: float, r: float, m: float,
                            a_t: float | None = None) -> tuple[float, float]:
-    """Edge simply supported, W' uniform over the whole plate; at radius r: sigma_r = 3 W'/(8 pi m t²) (3m+1)(1 - r²/a²),
-    sigma_t = 3 W'/(8 pi m t²) [(3m+1) - (m+3) r²/a_t²] (Roark 1954 p. 194). 0 <= r <= a; `a_t` (default a)
+    """Edge simply supported, W' uniform over the whole plate; at radius r:
+    sigma_r = 3 W'/(8 pi m t²) (3m+1)(1 - r²/a²), sigma_t = 3 W'/(8 pi m t²) [(3m+1) - (m+3) r²/a_t²]
+    (Roark 1954 p. 194). 0 <= r <= a; `a_t` (default a)
     reproduces App. IV's configurations 3-5, 7 (printed 1.75 in for the plate's 1.725 in)."""
     s = 3 * w_total / (8 * pi * m * t * t)
     a_t = a if a_t is None else a_t

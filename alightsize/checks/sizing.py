@@ -50,6 +50,8 @@ def size_item(item: Item, grid: int = 64, rtol: float = 1e-9) -> Sizing:
     at which the factor was evaluated. When no value passes: infeasible, sized at the largest factor found.
     """
     spec, sec = item.size, item.section
+    if spec is None or sec is None:
+        raise ValueError(f"{item.name}: nothing to size (no [size] table or no section)")
     name = spec.dimension
     seen: dict[float, float] = {}
 
@@ -62,7 +64,11 @@ def size_item(item: Item, grid: int = 64, rtol: float = 1e-9) -> Sizing:
         w = item.weight_each(sec.with_dim(name, x))
         return None if w is None else w[0]
 
-    key = (lambda x: x) if item.weight is None else weight     # smallest, when nothing to weigh
+    def key(x: float) -> float:
+        """The weight at x; x itself when the item has nothing to weigh (the smallest wins)."""
+        w = weight(x)
+        return x if w is None else w
+
     need = item.required
     if spec.gauges:
         order = sorted(spec.gauges, key=lambda g: (key(g), g))
@@ -92,8 +98,8 @@ def _lightest(f: Fn, seen: dict[float, float], key: Fn, low: float, high: float,
             _peak(f, xs[max(i - 1, 0)], xs[min(i + 1, grid - 1)], need, rtol)
     pts = sorted(seen)                          # the scan and every point the peak searches evaluated
     best, k = None, 0
-    for passing, run in groupby(pts, key=lambda x: seen[x] >= need):
-        run = list(run)
+    for passing, group in groupby(pts, key=lambda x: seen[x] >= need):
+        run = list(group)
         if passing:                             # a band, with the infeasible points beyond it (None at an end)
             left = pts[k - 1] if k else None
             right = pts[k + len(run)] if k + len(run) < len(pts) else None

@@ -7,7 +7,7 @@ import json
 import re
 import tomllib
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal, overload
 
 from alightsize.common import units
 from alightsize.common.errors import InputError, warn_input
@@ -146,7 +146,14 @@ class Node:
             raise self.error(name, "true or false", _describe(value))
         return value
 
+    @overload
+    def table(self, name: str, optional: Literal[False] = False) -> Node: ...
+
+    @overload
+    def table(self, name: str, optional: bool) -> Node | None: ...
+
     def table(self, name: str, optional: bool = False) -> Node | None:
+        """The sub-table `name`; None when `optional` and absent (a required one missing raises InputError)."""
         value = self.raw(name, None if optional else _MISSING)
         if value is None:
             return None

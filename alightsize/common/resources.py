@@ -8,7 +8,8 @@ _PACKAGE = Path(__file__).resolve().parents[1]           # the alightsize packag
 
 
 def data_dir(name: str) -> Path:
-    """`materials`, `templates` or `examples`: inside the installed wheel (alightsize/_data/NAME) or the checkout root."""
+    """`materials`, `templates` or `examples`: inside the installed wheel (alightsize/_data/NAME) or the checkout
+    root."""
     for candidate in (_PACKAGE / "_data" / name, _PACKAGE.parent / name):
         if candidate.is_dir():
             return candidate

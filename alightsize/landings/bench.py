@@ -304,7 +304,8 @@ def _html(data: dict) -> str:
     env.filters["setting"] = _setting_text
     return env.from_string("""<!doctype html><meta charset="utf-8"><title>alightsize bench</title>
 <style>body{font-family:sans-serif;max-width:75em;margin:1em auto;padding:0 1em} img{max-width:100%;height:auto}
-table{border-collapse:collapse;font-size:90%} td,th{border:1px solid #bbb;padding:2px 6px} td.num{text-align:right}</style>
+table{border-collapse:collapse;font-size:90%} td,th{border:1px solid #bbb;padding:2px 6px}
+td.num{text-align:right}</style>
 <h1>Landing simulator: speed against error</h1>
 <p>{{ m.cores }} cores, Python {{ m.python }}, numpy {{ m.numpy }}, numba {{ m.numba }}. Compiled code loaded in
 {{ '%.2f' % d.compile_or_cache_load_s }} s (excluded below). Every case, compiled or not, is run once untimed and then
@@ -319,8 +320,10 @@ times its tolerances: errors below it are not resolved.</p>
 <th>error<th>reference uncertainty<th>compiled simulator's speed-up over it</tr>
 {% for t in d.targets %}{% for kind, b in t.best.items() %}<tr><td>{{ t.scene }}<td>{{ b.method }}<td>{{ b.setting }}
 <td class=num>{{ '%.1f' % b.ms_per_simulated_s }}<td class=num>{{ '%.0f' % d.target_ms_per_simulated_s[t.scene] }}
-<td class=num>{{ '%.1e' % b.err_peak_xdd3_rel }}<td class=num>{{ '%.1e' % d.reference_uncertainty[t.scene].err_peak_xdd3_rel }}
-<td class=num>{{ '%.1fx' % t.speedup[kind] if t.speedup and kind in t.speedup else '' }}</tr>{% else %}<tr><td>{{ t.scene }}
+<td class=num>{{ '%.1e' % b.err_peak_xdd3_rel }}
+<td class=num>{{ '%.1e' % d.reference_uncertainty[t.scene].err_peak_xdd3_rel }}
+<td class=num>{{ '%.1fx' % t.speedup[kind] if t.speedup and kind in t.speedup else '' }}</tr>
+{% else %}<tr><td>{{ t.scene }}
 <td colspan=7>no setting at or below {{ '%g' % (100 * d.target_error) }} % (reference uncertainty
 {{ '%.1e' % d.reference_uncertainty[t.scene].err_peak_xdd3_rel }})</tr>
 {% endfor %}{% endfor %}</table>
@@ -329,7 +332,8 @@ times its tolerances: errors below it are not resolved.</p>
 <table><tr><th>scene<th>method<th>setting<th>simulated s<th>wall ms (least-largest)
 <th>ms per simulated s<th>rhs evals<th>steps<th>peak XDD(3) err<th>max stroke err<th>final state err</tr>
 {% for c in d.cases %}<tr><td>{{ c.scene }}<td>{{ c.method }}<td>{{ c.setting }}<td class=num>{{ '%.3f' % c.t_sim_s }}
-<td class=num>{{ '%.2f' % (c.wall_s * 1000) }} ({{ '%.2f' % (c.wall_min_s * 1000) }}-{{ '%.2f' % (c.wall_max_s * 1000) }})
+<td class=num>{{ '%.2f' % (c.wall_s * 1000) }}
+({{ '%.2f' % (c.wall_min_s * 1000) }}-{{ '%.2f' % (c.wall_max_s * 1000) }})
 <td class=num>{{ '%.1f' % (c.wall_s * 1000 / c.t_sim_s) }}<td class=num>{{ '{:,}'.format(c.rhs_evals) }}
 <td class=num>{{ '{:,}'.format(c.steps) }}<td class=num>{{ '%.1e' % c.err_peak_xdd3_rel }}
 <td class=num>{{ '%.1e' % c.err_max_stroke_rel }}<td class=num>{{ '%.1e' % c.err_final_state_rel }}</tr>
@@ -337,14 +341,13 @@ times its tolerances: errors below it are not resolved.</p>
 
 
 def _plot(data: dict, path: Path) -> None:
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from matplotlib.figure import Figure
     scenes = list(data["references"])
     methods = sorted({c["method"] for c in data["cases"]})
     ncol = min(3, len(scenes))
     nrow = -(-len(scenes) // ncol)
-    fig, axes = plt.subplots(nrow, ncol, figsize=(4.2 * ncol, 3.4 * nrow + 0.8), squeeze=False, layout="constrained")
+    fig = Figure(figsize=(4.2 * ncol, 3.4 * nrow + 0.8), layout="constrained")
+    axes = fig.subplots(nrow, ncol, squeeze=False)
     for ax in axes.flat[len(scenes):]:
         ax.set_axis_off()
     for ax, scene in zip(axes.flat, scenes):
@@ -371,7 +374,6 @@ def _plot(data: dict, path: Path) -> None:
             handles.setdefault(label, h)
     fig.legend(handles.values(), handles.keys(), loc="outside lower center", ncol=min(4, len(handles)), fontsize=8)
     write_atomic(path, lambda tmp: fig.savefig(tmp, format="png", dpi=100, metadata={"Software": None}))
-    plt.close(fig)
 
 
 def write_bench(data: dict, out: Path) -> list[Path]:

@@ -28,7 +28,8 @@ class Criteria:
     def failures(self, summary: dict) -> list[str]:
         """The criteria a landing summary (alightsize.simulate/1) violates, in words; [] when it meets all."""
         out = []
-        limits = ((self.max_xdd_g, summary["peak"]["xdd_g"], "g"), (self.max_onset_g_s, summary["peak"]["onset_g_s"], "g/s"))
+        limits = ((self.max_xdd_g, summary["peak"]["xdd_g"], "g"),
+                  (self.max_onset_g_s, summary["peak"]["onset_g_s"], "g/s"))
         for lim, peak, unit in limits:
             for axis, (x, cap) in enumerate(zip(peak, lim or ())):
                 if x > cap:

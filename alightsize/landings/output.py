@@ -51,7 +51,8 @@ def outcome(cfg: SceneConfig, res: Result) -> tuple[str, str]:
     """(outcome, reason) per docs/contracts.md from the loop's status."""
     if res.bottomed is not None:
         t, leg, cell = res.bottomed
-        return "bottomed", f"leg {leg + 1} {cfg.cell_names[leg][cell]} cell stroked past its crushing plateau at {t:.4f} s"
+        return "bottomed", (f"leg {leg + 1} {cfg.cell_names[leg][cell]} cell stroked past its crushing plateau "
+                            f"at {t:.4f} s")
     st = res.status
     if st == "stable":
         return "stable", "energy criterion (eq. 89-95) satisfied over the footpads on the ground, no leg left to land"
@@ -167,14 +168,13 @@ def history_frame(cfg: SceneConfig, res: Result) -> pd.DataFrame:
     df = pd.DataFrame(cols)
     if cfg.output_interval:
         grid = np.arange(res.t[0], res.t[-1] + 0.5 * cfg.output_interval, cfg.output_interval)
-        df = pd.DataFrame({c: (np.interp(grid, res.t, df[c].to_numpy(float)) if c != "t_s" else grid) for c in df.columns})
+        df = pd.DataFrame({c: (np.interp(grid, res.t, df[c].to_numpy(float)) if c != "t_s" else grid)
+                           for c in df.columns})
     return df
 
 
 def plots(cfg: SceneConfig, res: Result, out: Path) -> list[Path]:
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from matplotlib.figure import Figure
     from matplotlib.lines import Line2D
     xdd, omd = body_histories(cfg, res)
     files = []
@@ -182,11 +182,11 @@ def plots(cfg: SceneConfig, res: Result, out: Path) -> list[Path]:
     def save(fig, name):
         path = out / name
         write_atomic(path, lambda tmp: fig.savefig(tmp, format="png", dpi=110, metadata={"Software": None}))
-        plt.close(fig)
         files.append(path)
 
     for data, label, unit, name in ((xdd, "XDD", "g", "xdd.png"), (omd, "OMD", "rad/s²", "omd.png")):
-        fig, axes = plt.subplots(3, 1, figsize=(7, 7), sharex=True, layout="constrained")
+        fig = Figure(figsize=(7, 7), layout="constrained")
+        axes = fig.subplots(3, 1, sharex=True)
         for k in range(3):
             axes[k].plot(res.t, data[:, k], lw=0.9)
             axes[k].set_ylabel(f"{label}({k + 1}), {unit}")
@@ -194,7 +194,8 @@ def plots(cfg: SceneConfig, res: Result, out: Path) -> list[Path]:
         axes[-1].set_xlabel("time, s")
         fig.suptitle(f"{literal(cfg.title)}: {label} (cf. Figs. 33-38)")
         save(fig, name)
-    fig, ax = plt.subplots(figsize=(7, 4), layout="constrained")
+    fig = Figure(figsize=(7, 4), layout="constrained")
+    ax = fig.subplots()
     kinds = {}                              # cell kind ("rot" for rot1-rot4) -> line style
     for i in range(len(cfg.scene.legs)):
         for j, name in enumerate(cfg.cell_names[i]):
@@ -209,7 +210,8 @@ def plots(cfg: SceneConfig, res: Result, out: Path) -> list[Path]:
     handles += [Line2D([], [], color="k", ls=style, lw=0.8, label=kind) for kind, style in kinds.items()]
     fig.legend(handles=handles, loc="outside right upper", fontsize=8)
     save(fig, "strokes.png")
-    fig, ax = plt.subplots(figsize=(7, 4), layout="constrained")
+    fig = Figure(figsize=(7, 4), layout="constrained")
+    ax = fig.subplots()
     ke, pe = energies(cfg, res)
     ax.plot(res.t, ke, label="kinetic")
     ax.plot(res.t, pe - pe[0], label="potential (from first contact)")
@@ -220,14 +222,16 @@ def plots(cfg: SceneConfig, res: Result, out: Path) -> list[Path]:
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
     save(fig, "energy.png")
-    fig, ax = plt.subplots(figsize=(6, 6), layout="constrained")
+    fig = Figure(figsize=(6, 6), layout="constrained")
+    ax = fig.subplots()
     plot_footprints(cfg.scene, res, ax)
     ax.set_title("Footprints on the terrain (plan, terrain axes)")
     save(fig, "footprints.png")
     if res.t[-1] > 0:
         f = default_frequencies(1.0, 1000.0)
         spec = srs(res.t, xdd[:, 2], f, cfg.srs_damping)
-        fig, ax = plt.subplots(figsize=(7, 4), layout="constrained")
+        fig = Figure(figsize=(7, 4), layout="constrained")
+        ax = fig.subplots()
         ax.loglog(f, spec)
         ax.set_xlabel("frequency, Hz")
         ax.set_ylabel("maximax absolute acceleration, g")

@@ -1,9 +1,9 @@
 """The run store of a sweep: SQLite in WAL mode at DIR/runs.sqlite (docs/contracts.md), one row per run.
 
 Each finished run is committed on its own, so Ctrl-C, kill -9 or a dying worker loses no finished run; a
-re-run skips the runs stored `done` with the same inputs hash, whatever their id (alightsize.landings.sweep). Columns are added as a study needs them
-(parameters, summary figures); `wall_s`, `worker` and `finished_at` are the timing columns, the only ones
-that may differ between backends.
+re-run skips the runs stored `done` with the same inputs hash, whatever their id (alightsize.landings.sweep).
+Columns are added as a study needs them (parameters, summary figures); `wall_s`, `worker` and `finished_at` are
+the timing columns, the only ones that may differ between backends.
 """
 
 from __future__ import annotations

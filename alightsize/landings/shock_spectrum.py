@@ -27,6 +27,10 @@ from math import asin, atan2, ceil, cos, exp, expm1, pi, sin, sqrt
 import numpy as np
 from numba import njit
 
+from alightsize_sim.cache import register
+
+register(__file__)                                  # numba's cache in the user cache folder, not the package
+
 SUBSTEPS_PER_PERIOD = 16
 """Sub-steps per natural period at least (a piece longer than 1/16 period is split)."""
 

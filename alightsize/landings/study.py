@@ -108,7 +108,8 @@ def _table_points(path: Path, runs_node: Node, scenes: dict, compare: Node | Non
         with open(table, newline="", encoding="utf-8") as fh:
             rows = list(csv.DictReader(fh))
     except UnicodeDecodeError as exc:
-        raise runs_node.error("table", "a CSV run table in UTF-8", f"{str(table)!r}: {exc.reason} at byte {exc.start}") from None
+        raise runs_node.error("table", "a CSV run table in UTF-8",
+                              f"{str(table)!r}: {exc.reason} at byte {exc.start}") from None
     points = []
     for n, row in enumerate(rows, start=2):
         where = f"{table.name} line {n}"

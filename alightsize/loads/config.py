@@ -97,7 +97,8 @@ def _telescoping(node: Node) -> TelescopingLeg:
     node.string("note", "")
     node.finish()
     if leg.pad_lever >= leg.length:
-        raise node.error("pad_lever", f"a pad lever shorter than the leg ({leg.length:.4g} m)", f"{leg.pad_lever:.4g} m")
+        raise node.error("pad_lever", f"a pad lever shorter than the leg ({leg.length:.4g} m)",
+                         f"{leg.pad_lever:.4g} m")
     if not 0 <= leg.friction < 1:
         raise node.error("friction", "a friction coefficient in [0, 1)", f"{leg.friction}")
     return leg

@@ -63,5 +63,6 @@ def read_truss(node: Node) -> TrussAngles:
     node.string("note", "")
     node.finish()
     if not all(0 < v < radians(90) for v in a.values()) or a["gamma"] + a["rho"] >= radians(180):
-        raise node.error("theta", "truss angles between 0 and 90 deg", ", ".join(f"{np.degrees(v):.4g} deg" for v in a.values()))
+        raise node.error("theta", "truss angles between 0 and 90 deg",
+                         ", ".join(f"{np.degrees(v):.4g} deg" for v in a.values()))
     return TrussAngles(**a)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -25,6 +26,14 @@ class Material:
     crush_strength: float | None = None        # crushable cores: the crushing stress
     stroke_fraction: float | None = None       # crushable cores: usable stroke / core length
     source: dict = field(default_factory=dict)
+
+    def value(self, prop: str) -> float:
+        """A property a formula uses. A design refuses a material without the properties its checks need before
+        any check runs (alightsize.pipeline.items), so a missing one here is a programming error."""
+        v = getattr(self, prop)
+        if v is None:
+            raise ValueError(f"material {self.key} has no {prop}")
+        return v
 
 
 def read_material(path: str | Path) -> Material:
@@ -57,7 +66,7 @@ def material_paths(node: Node, key: str, base: Path) -> list[Path]:
     return out
 
 
-def library(extra_paths: list[Path] = ()) -> dict[str, Material]:
+def library(extra_paths: Iterable[str | Path] = ()) -> dict[str, Material]:
     """The shipped materials plus those at `extra_paths` (files or folders), keyed by file stem."""
     files = sorted(data_dir("materials").glob("*.toml"))
     for p in extra_paths:

@@ -121,7 +121,8 @@ def _legs(node: Node, cells: dict[str, Node]) -> list[dict]:
     angles_raw = node.raw("pad_angles", [])
     if not isinstance(angles_raw, list):
         raise node.error("pad_angles", "an array of angles", repr(angles_raw))
-    angles = tuple(node.parse_quantity(f"pad_angles[{i}]", a, "angle", positive=False) for i, a in enumerate(angles_raw))
+    angles = tuple(node.parse_quantity(f"pad_angles[{i}]", a, "angle", positive=False)
+                   for i, a in enumerate(angles_raw))
     axial = _cell_name(node, "axial", cells)
     pads = _cell_name(node, "pads", cells) if angles else ""
     factors = _factors(node, n, 1 + len(angles), "axial, then each pad")
@@ -188,7 +189,8 @@ def _footpad_mass(node: Node) -> float:
     mass = node.quantity("footpad_mass", "mass", positive=False) if node.has("footpad_mass") else 0.0
     if not (mass == 0.0 or FOOTPAD_MASS_MIN <= mass):
         raise node.error("footpad_mass", f"0 (massless footpads) or a mass of {FOOTPAD_MASS_MIN:g} kg or more (a "
-                         "lighter footpad rings on its leg faster than any step can follow)", repr(node.raw("footpad_mass")))
+                         "lighter footpad rings on its leg faster than any step can follow)",
+                         repr(node.raw("footpad_mass")))
     return mass
 
 
@@ -348,7 +350,8 @@ def read_scene(path: str | Path, overrides: dict[str, object] | None = None) -> 
     cells_node.finish()
     leg_specs = _legs(root.table("legs"), cell_nodes)
     models = {k: _cell(n) for k, n in cell_nodes.items()}
-    legs, names = [], []
+    legs: list[TelescopingLeg | ArticulatedLeg] = []
+    names: list[tuple[str, ...]] = []
     for spec in leg_specs:
         f = spec["factors"]
         if spec["kind"] == "articulated":
@@ -394,7 +397,7 @@ def read_scene(path: str | Path, overrides: dict[str, object] | None = None) -> 
         if not -np.pi / 2 < slope < np.pi / 2:
             raise ter.error("slope", "a slope between -90 and 90 deg", f"{np.degrees(slope):.4g} deg")
     slope = slope or 0.0
-    lepk = rot(0, slope)                                # kappa -> epsilon (eq. 1, LEPK): gravity (0, g sin, -g cos) (eq. 4-5)
+    lepk = rot(0, slope)            # kappa -> epsilon (eq. 1, LEPK): gravity (0, g sin, -g cos) (eq. 4-5)
 
     ini = root.table("initial")
     ini.allow(("velocity", "heading", "roll", "yaw", "pitch", "inclination", "inclination_azimuth", "rates", "note"))
@@ -411,7 +414,8 @@ def read_scene(path: str | Path, overrides: dict[str, object] | None = None) -> 
             raise ini.error("inclination", "either inclination or yaw/pitch", "both")
         theta = ini.quantity("inclination", "angle", positive=False)
         default_az = float(np.arctan2(vel[1], vel[0])) if np.hypot(vel[0], vel[1]) > 0 else 0.0
-        az = ini.quantity("inclination_azimuth", "angle", positive=False) if ini.has("inclination_azimuth") else default_az
+        az = (ini.quantity("inclination_azimuth", "angle", positive=False) if ini.has("inclination_azimuth")
+              else default_az)
         yaw, pitch = _inclination_attitude(roll, theta, az)
     else:
         yaw = ini.quantity("yaw", "angle", 0.0, positive=False) if ini.has("yaw") else 0.0
@@ -437,7 +441,8 @@ def read_scene(path: str | Path, overrides: dict[str, object] | None = None) -> 
 
     body = np.zeros((0, 3)) if bottom is None else (to_geo.T @ (np.array([0.0, 0.0, -bottom]) - cg))[None, :]
     scene = Scene(mass, moments, tuple(legs), lepk @ np.array([0.0, 0.0, -g]), lepk @ vel, q0, to_geo.T @ rates,
-                  mu_s if mu_s is not None else 1.5e6, mu_d if mu_d is not None else 1.0e6, to_geo.T @ np.array([0.0, 0, 1]),
+                  mu_s if mu_s is not None else 1.5e6, mu_d if mu_d is not None else 1.0e6,
+                  to_geo.T @ np.array([0.0, 0, 1]),
                   body, leg_specs[0]["footpad_mass"], terrain=features, soil=soil,
                   footpad_band=leg_specs[0]["footpad_band"], footpad_diameter=leg_specs[0]["footpad_diameter"])
     return SceneConfig(path, name, title, scene, c, to_geo, lepk, interval, srs_damping, tuple(names))
@@ -488,7 +493,7 @@ def impact_conditions(cfg: SceneConfig) -> dict:
     v = cfg.scene.v0
     down = float(v @ g)
     v_h = v - down * g
-    downhill = np.array([0.0, 0.0, 1.0]) - g * g[2]         # the terrain normal, less its vertical part, points downhill
+    downhill = np.array([0.0, 0.0, 1.0]) - g * g[2]     # the terrain normal, less its vertical part, points downhill
     heading = None
     if np.linalg.norm(downhill) > 1e-9 and np.linalg.norm(v_h) > 1e-9:
         cos = v_h @ downhill / (np.linalg.norm(v_h) * np.linalg.norm(downhill))

@@ -124,7 +124,7 @@ def read_section(node: Node) -> Section:
         if ("outside_diameter" in dims) == ("inside_diameter" in dims):
             raise node.error("outside_diameter", "exactly one of outside_diameter, inside_diameter",
                              "both" if "outside_diameter" in dims else "neither")
-        required = ("wall",)
+        required: tuple[str, ...] = ("wall",)
     else:
         required = tuple(n for n in names if n != "inner_diameter")
     for n in required:

@@ -222,7 +222,8 @@ def summary_json(res: DesignResult) -> dict:
         out["landing_margins"] = [c.as_json() for c in res.config.landings.closest]
     if res.sizings:
         out["sizing"] = [{"item": s.item, "dimension": s.dimension, "printed_m": s.printed, "sized_m": s.sized,
-                          "design_factor_printed": _finite(s.factor_printed), "design_factor_sized": _finite(s.factor_sized),
+                          "design_factor_printed": _finite(s.factor_printed),
+                          "design_factor_sized": _finite(s.factor_sized),
                           "weight_printed_kg": s.weight_printed, "weight_sized_kg": s.weight_sized,
                           "feasible": s.feasible, "at_bound": s.at_bound} for s in res.sizings]
     return out

@@ -60,8 +60,8 @@ def _read_size(node: Node, section: Section | None, checks: tuple[Check, ...]) -
     if section is None:
         raise node.error("dimension", "an item with a [section] to size", "no section")
     if section.overrides:
-        raise node.error("dimension", "a section without printed area/inertia/c overrides (they would not follow the size)",
-                         ", ".join(section.overrides))
+        raise node.error("dimension", "a section without printed area/inertia/c overrides (they would not follow the "
+                         "size)", ", ".join(section.overrides))
     dim = node.string("dimension", choices=tuple(section.dims))
     for check in checks:
         key = next((k for k, d in check.replaces.items() if d == dim), None)
@@ -160,7 +160,8 @@ def _validate(item: Item, node: Node) -> None:
             bad = out_of_range(check, item.section.with_dim(item.size.dimension, value), item.material)
             if bad:
                 raise InputError(node.file, node.key("size"), f"a size range keeping {check.where} in its formula's "
-                                 f"range: {bad[1]}", f"{item.size.dimension} {units.fmt(value, 'length', 'US')}: {bad[2]}")
+                                 f"range: {bad[1]}",
+                                 f"{item.size.dimension} {units.fmt(value, 'length', 'US')}: {bad[2]}")
 
     if item.weight is not None:
         try:

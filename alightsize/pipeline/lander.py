@@ -132,7 +132,8 @@ def _envelope(node: Node) -> Envelope:
                 "note"))
     vertical = _range(node, "vertical_speed", "velocity", None)
     if vertical is None or vertical[1] <= 0:
-        raise node.error("vertical_speed", "a descent speed above 0, or a [low, high] range", repr(node.raw("vertical_speed", None)))
+        raise node.error("vertical_speed", "a descent speed above 0, or a [low, high] range",
+                         repr(node.raw("vertical_speed", None)))
     horizontal = _range(node, "horizontal_speed", "velocity", (0.0, 0.0))
     slope = _signed(node, "slope", pi / 2)
     incl = _signed(node, "inclination", pi)
@@ -176,9 +177,9 @@ def _q(x: float, unit: str) -> str:
 
 def landing_cases(path: Path, name: str, req: Requirements, legs: int, base: dict | None = None) -> Study:
     """The envelope's corners (each range at both ends, a slope or inclination magnitude and the roll rate at
-    either sign, a leg leading or two legs straddling the velocity) and `samples` seeded Monte Carlo landings drawn uniformly
-    over the envelope (heading, roll and, with cell_scatter, every cell's crushing force as well); every run
-    lands the lander file's scene with the overrides `base` (a design variant) under its own."""
+    either sign, a leg leading or two legs straddling the velocity) and `samples` seeded Monte Carlo landings drawn
+    uniformly over the envelope (heading, roll and, with cell_scatter, every cell's crushing force as well); every
+    run lands the lander file's scene with the overrides `base` (a design variant) under its own."""
     base = dict(base or {})
     e = req.envelope
     axes: dict[str, list] = {"initial.velocity[2]": [_q(-v, "m/s") for v in sorted(set(e.vertical))],
@@ -224,7 +225,8 @@ def _crush(curve) -> float:
     return crush_stroke(curve.deflection, curve.force)[0]
 
 
-def _loads_config(root: Node, path: Path, name: str, scene: SceneConfig, units: str) -> tuple[LoadsConfig, tuple[str, ...]]:
+def _loads_config(root: Node, path: Path, name: str, scene: SceneConfig,
+                  units: str) -> tuple[LoadsConfig, tuple[str, ...]]:
     """The App. III loads config of the lander's own legs and cells (and the envelopes its members use)."""
     node = root.table("structure", optional=True) or Node(root.file, "structure", {}, root.context)
     leg = scene.scene.legs[0]
@@ -292,8 +294,10 @@ def _crushable(node: Node, root: Node, mats: dict) -> Node:
                          repr(node.data.get("material")))
     force, stroke = crush_stroke(*cell_curve(root, cell))
     prism = {k: v for k, v in w.items() if k not in ("method", "cell")}
-    prism.update(method="prism", area=f"{force / mat.crush_strength!r} m^2", length=f"{stroke / mat.stroke_fraction!r} m")
-    prism.setdefault("note", f"cell {cell}: area = crushing force / crush strength, length = stroke / {mat.stroke_fraction:g}")
+    prism.update(method="prism", area=f"{force / mat.crush_strength!r} m^2",
+                 length=f"{stroke / mat.stroke_fraction!r} m")
+    prism.setdefault("note", f"cell {cell}: area = crushing force / crush strength, "
+                             f"length = stroke / {mat.stroke_fraction:g}")
     return Node(node.file, node.path, {**node.data, "weight": prism}, root.context)
 
 

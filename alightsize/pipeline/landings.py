@@ -163,7 +163,8 @@ def read_landing_spec(node: Node, design: Path, loads: LoadsConfig | None) -> La
         if n not in known:
             raise node.error("envelopes", "names of envelopes of the [loads] file (" + ", ".join(known) + ")", repr(n))
     if not is_file(path):
-        raise node.error("study", "the path of a study TOML (relative to the design config)", f"{str(path)!r}: no such file")
+        raise node.error("study", "the path of a study TOML (relative to the design config)",
+                         f"{str(path)!r}: no such file")
     study = read_study(path)
     if role == "criteria" and study.criteria is None:
         raise node.error("role", f"role = \"load_cases\", or [criteria] in {path.name} for the landings to meet",

@@ -3,10 +3,10 @@
 
 Articulated legs: NAME is an App. III member (PU1, PL1, R123, ...), a truss tube by default (`role`):
 axial stress, column buckling, local buckling under its envelope load; `role = "rod"`: tension only;
-`role = "pin"`: double shear of the pin through it and bearing on its lug (`pin.lug_material`). Telescoping legs (App. III free body):
-`lower_tube` and `upper_tube` (axial crush AF1 with the bending moment P1 (rho - a) at the pads, the lower
-tube also as a column of the leg's length rho, or `column_length`; each tube weighs its span from the pads,
-rho - a and a, unless `length` is given), `axial_cap` (fixed-edge plate under AF1), `pad_plate`
+`role = "pin"`: double shear of the pin through it and bearing on its lug (`pin.lug_material`). Telescoping legs
+(App. III free body): `lower_tube` and `upper_tube` (axial crush AF1 with the bending moment P1 (rho - a) at the
+pads, the lower tube also as a column of the leg's length rho, or `column_length`; each tube weighs its span from
+the pads, rho - a and a, unless `length` is given), `axial_cap` (fixed-edge plate under AF1), `pad_plate`
 (supported plate under P3) and `swivel_pin` (the pin carrying the resultant of AF1 and P2, in shear and in
 bearing on its lug).
 

@@ -42,7 +42,8 @@ def weight_figure(res) -> Figure:
     rows = sorted(res.weights, key=lambda w: w.count * w.each)
     fig = Figure(figsize=(7, 0.35 * len(rows) + 1.2), layout="tight")
     ax = fig.subplots()
-    ax.barh([literal(w.label) for w in rows], [to_display(w.count * w.each, "mass", system) for w in rows], color="#468")
+    ax.barh([literal(w.label) for w in rows], [to_display(w.count * w.each, "mass", system) for w in rows],
+            color="#468")
     ax.set_xlabel(f"weight per leg ({unit_label('mass', system)})")
     ax.set_title(f"Configuration {literal(res.config.configuration)}: weight breakdown")
     return fig

@@ -17,25 +17,22 @@ from functools import lru_cache
 from pathlib import Path
 from typing import NamedTuple
 
-import matplotlib
+import numpy as np
+from matplotlib.figure import Figure
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+from alightsize_sim.landing import Result, simulate
 
-from alightsize_sim.landing import Result, simulate  # noqa: E402
+from alightsize import __version__
 
-from alightsize import __version__  # noqa: E402
+from alightsize.reports import drop_tables
 
-from alightsize.reports import drop_tables  # noqa: E402
-
-from alightsize.common import units  # noqa: E402
-from alightsize.common.atomic import write_atomic  # noqa: E402
-from alightsize.landings.output import body_histories, summary  # noqa: E402
-from alightsize.reports.rendering import template_env  # noqa: E402
-from alightsize.common.resources import data_dir  # noqa: E402
-from alightsize.model.scene_config import SceneConfig, read_scene  # noqa: E402
-from alightsize.landings.shock_spectrum import default_frequencies, srs  # noqa: E402
+from alightsize.common import units
+from alightsize.common.atomic import write_atomic
+from alightsize.landings.output import body_histories, summary
+from alightsize.reports.rendering import template_env
+from alightsize.common.resources import data_dir
+from alightsize.model.scene_config import SceneConfig, read_scene
+from alightsize.landings.shock_spectrum import default_frequencies, srs
 
 SCHEMA = "alightsize.drops/1"
 DROPS_DIR = data_dir("examples") / "affdl-tr-66-33" / "drops"
@@ -269,14 +266,14 @@ def render(doc: dict, kind: str) -> str:
 # ------------------------------------------------------------------ plots
 def _save(fig, path: Path) -> Path:
     write_atomic(path, lambda tmp: fig.savefig(tmp, format="png", dpi=100, metadata={"Software": None}))
-    plt.close(fig)
     return path
 
 
 def plot_histories(drop: Drop, path: Path) -> Path:
     """XDD(1..3) (g) and OMD(1..3) (rad/s^2) in geometric body axes against time (cf. the report's Figs. 33-100)."""
     xdd, omd = body_histories(drop.cfg, drop.res)
-    fig, axes = plt.subplots(3, 2, figsize=(10, 7), sharex=True)
+    fig = Figure(figsize=(10, 7))
+    axes = fig.subplots(3, 2, sharex=True)
     for k in range(3):
         for col, (data, label) in enumerate(((xdd, f"XDD({k + 1}), g"), (omd, f"OMD({k + 1}), rad/s²"))):
             axes[k, col].plot(drop.res.t, data[:, k], lw=0.9)
@@ -293,7 +290,8 @@ def plot_histories(drop: Drop, path: Path) -> Path:
 def plot_srs(entry: dict, path: Path) -> Path:
     """Maximax shock response spectrum of XDD(3) (cf. the report's Shock Spectra Comparison figures)."""
     spec = entry["srs_xdd3"]
-    fig, ax = plt.subplots(figsize=(7, 4))
+    fig = Figure(figsize=(7, 4))
+    ax = fig.subplots()
     ax.loglog(spec["frequency_Hz"], spec["acceleration_g"])
     ax.set_xlabel("frequency, Hz")
     ax.set_ylabel("maximax absolute acceleration, g")
@@ -309,7 +307,8 @@ def plot_energy(doc: dict, path: Path) -> Path:
     """Total cell energy against the drop energy for every drop with a table, with the 1:1 line (Fig. 102)."""
     tabled = [e for e in doc["drops"] if e["table"] is not None]
     x = np.array([e["drop_energy_J"] for e in tabled]) / FT_LB
-    fig, ax = plt.subplots(figsize=(6, 6))
+    fig = Figure(figsize=(6, 6))
+    ax = fig.subplots()
     for src, marker, key, label in (("simulated", "o", "energy_J", "this simulation"),
                                     ("analytical", "s", "printed_energy_J", "analytical (printed)"),
                                     ("experimental", "^", "printed_energy_J", "experimental (printed)")):

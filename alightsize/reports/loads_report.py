@@ -6,22 +6,19 @@ import json
 from math import degrees
 from pathlib import Path
 
-import matplotlib
+import numpy as np
+from matplotlib.figure import Figure
+from openpyxl import Workbook
+from openpyxl.styles import Font
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-from openpyxl import Workbook  # noqa: E402
-from openpyxl.styles import Font  # noqa: E402
+from alightsize_sim.articulated_statics import MEMBERS
 
-from alightsize_sim.articulated_statics import MEMBERS  # noqa: E402
-
-from alightsize.common.atomic import write_atomic  # noqa: E402
-from alightsize.loads.envelopes import Extreme, member_fields  # noqa: E402
-from alightsize.loads.quasi_static import LoadsResult, loads_json  # noqa: E402
-from alightsize.common.units import fmt, to_display, unit_label  # noqa: E402
-from alightsize import __version__  # noqa: E402
-from alightsize.reports.rendering import save_workbook, template_env  # noqa: E402
+from alightsize.common.atomic import write_atomic
+from alightsize.loads.envelopes import Extreme, member_fields
+from alightsize.loads.quasi_static import LoadsResult, loads_json
+from alightsize.common.units import fmt, to_display, unit_label
+from alightsize import __version__
+from alightsize.reports.rendering import save_workbook, template_env
 
 LABELS = {"PL1": "PL1, (PL3)", "PL2": "PL2, (PL6)", "PU1": "PU1, (PU2)", "R1213": "R12/13"}
 _META = {"Software": None}
@@ -122,7 +119,8 @@ def heatmap(res: LoadsResult, case_name: str, path: Path, system: str) -> None:
     """Each member's load over alpha-beta at the psi of its largest magnitude."""
     case = next(c for c in res.config.cases if c.name == case_name)
     (psi, alpha, beta), fields = member_fields(case, res.config.grid)
-    fig, axes = plt.subplots(2, 5, figsize=(17, 6.5), sharex=True, sharey=True, layout="constrained")
+    fig = Figure(figsize=(17, 6.5), layout="constrained")
+    axes = fig.subplots(2, 5, sharex=True, sharey=True)
     a, b = np.degrees(alpha), np.degrees(beta)
     extent = (a[0], a[-1], b[0], b[-1])
     bottomed = False
@@ -143,7 +141,6 @@ def heatmap(res: LoadsResult, case_name: str, path: Path, system: str) -> None:
     fig.suptitle(f"Configuration {case_name}: member loads, {unit_label('force', system)} (tension +), over alpha-beta "
                  "at the governing psi" + ("; grey: a cell has bottomed" if bottomed else ""))
     fig.savefig(path, format="png", dpi=72, metadata=_META)
-    plt.close(fig)
 
 
 def write_loads(res: LoadsResult, out: Path, system: str | None = None) -> list[Path]:

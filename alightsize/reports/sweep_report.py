@@ -122,9 +122,7 @@ def plot_axes(study: Study, rows: list[dict]) -> tuple[str, str] | None:
 
 def boundary_plot(rows: list[dict], axes: tuple[str, str], path: Path) -> Path:
     """Success fraction at each (x, y) of the two parameters in the study's units: green stable/met, red not."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from matplotlib.figure import Figure
     params = [json.loads(r["params_json"]) for r in rows]
     (xs_run, x_unit), (ys_run, y_unit) = (_as_written(params, k) for k in axes)
     cells: dict = {}
@@ -133,7 +131,8 @@ def boundary_plot(rows: list[dict], axes: tuple[str, str], path: Path) -> Path:
             cells.setdefault(xy, []).append(_success(r))
     xy = np.array(list(cells))
     frac = np.array([np.mean(v) for v in cells.values()])
-    fig, ax = plt.subplots(figsize=(6.4, 4.8))
+    fig = Figure(figsize=(6.4, 4.8))
+    ax = fig.subplots()
     sc = ax.scatter(xy[:, 0], xy[:, 1], c=frac, cmap="RdYlGn", vmin=0, vmax=1, s=60 if len(xy) < 400 else 12,
                     edgecolors="k", linewidths=0.3)
     fig.colorbar(sc, ax=ax, label="fraction of runs successful")
@@ -147,16 +146,14 @@ def boundary_plot(rows: list[dict], axes: tuple[str, str], path: Path) -> Path:
     ax.set_title("Successful runs over two parameters" + (" (line: half successful)" if len(xs) * len(ys) == len(xy) else ""))
     fig.tight_layout()
     write_atomic(path, lambda p: fig.savefig(p, dpi=110, format="png"))
-    plt.close(fig)
     return path
 
 
 def distribution_plot(rows: list[dict], path: Path) -> Path:
     """Histograms of peak XDD(3) and the largest cell stroke of every done run."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    fig, axs = plt.subplots(1, 2, figsize=(9, 3.6))
+    from matplotlib.figure import Figure
+    fig = Figure(figsize=(9, 3.6))
+    axs = fig.subplots(1, 2)
     for ax, key, label in zip(axs, ("peak_xdd3_g", "max_stroke_m"), ("peak XDD(3) (g)", "largest cell stroke (m)")):
         x = np.array([r[key] for r in rows if r.get(key) is not None], float)
         ax.hist(x, bins=min(40, max(5, int(np.sqrt(len(x))))), color="#4a7", edgecolor="k", linewidth=0.3)
@@ -164,7 +161,6 @@ def distribution_plot(rows: list[dict], path: Path) -> Path:
         ax.set_ylabel("runs")
     fig.tight_layout()
     write_atomic(path, lambda p: fig.savefig(p, dpi=110, format="png"))
-    plt.close(fig)
     return path
 
 

@@ -162,7 +162,8 @@ class Evaluator:
         frac = res.weight_fraction
         feasible = stage == "full" and failing == 0 and checks == 0 and not unsized
         graded = sum(kinds.values()) / max(len(lander.study.criteria.kinds()), 1)    # how many criteria fail
-        violation = (failing + graded) / max(n, 1) + checks / max(len(res.records), 1) + len(unsized) / max(len(res.sizings), 1)
+        violation = ((failing + graded) / max(n, 1) + checks / max(len(res.records), 1)
+                     + len(unsized) / max(len(res.sizings), 1))
         objective = frac if feasible else 1.0 + frac + violation
         ev = Evaluation(key, tuple(map(float, x)), stage, objective, feasible, res.per_leg * res.config.legs, frac,
                         n, failing, dict(+kinds), checks, unsized, _peak_g(rows))
@@ -184,7 +185,8 @@ class Evaluator:
         corners = {k: [r for r in lan.study.runs if r.run_id.startswith(CORNER)] for k, lan in landers.items()}
         rest = {k: [r for r in lan.study.runs if not r.run_id.startswith(CORNER)] for k, lan in landers.items()}
         first = dict(zip(landers, self._land([(landers[k], corners[k]) for k in landers])))
-        passed = [k for k in landers if full or all(r["status"] == "done" and r.get("criteria_ok") == 1 for r in first[k])]
+        passed = [k for k in landers
+                  if full or all(r["status"] == "done" and r.get("criteria_ok") == 1 for r in first[k])]
         second = dict(zip(passed, self._land([(landers[k], rest[k]) for k in passed])))
         for k, lan in landers.items():
             runs, rows = corners[k], first[k]
@@ -210,8 +212,8 @@ class Evaluator:
         found = {}
         for k in range(0, len(wanted), 500):
             chunk = wanted[k:k + 500]
-            cur = self.db.execute(f"SELECT key, evaluation FROM candidates WHERE key IN ({', '.join('?' * len(chunk))})",
-                                  chunk)
+            marks = ", ".join("?" * len(chunk))
+            cur = self.db.execute(f"SELECT key, evaluation FROM candidates WHERE key IN ({marks})", chunk)
             found.update((key, Evaluation.from_json(json.loads(text))) for key, text in cur)
         return found
 

@@ -32,7 +32,10 @@ def convergence_figure(res) -> Figure:
 def trade_figure(res, axis: str) -> Figure:
     """The lightest feasible system's weight fraction at each limit of one trade axis."""
     pts = res.trade[axis]
-    scale, unit = (degrees(1.0), "deg") if axis == "slope" else (registry().Quantity(1.0, "m/s").to("knot").magnitude, "kn")
+    if axis == "slope":
+        scale, unit = degrees(1.0), "deg"
+    else:
+        scale, unit = registry().Quantity(1.0, "m/s").to("knot").magnitude, "kn"
     fig = Figure(figsize=(6, 4), layout="tight")
     ax = fig.subplots()
     ok = [(p.value * scale, 100 * p.best.fraction) for p in pts if p.best.feasible]

@@ -98,7 +98,8 @@ def _zero(x) -> float:
     return 0.0
 
 
-def search(ev: Evaluator, spec: SynthesisSpec, budget: Budget, x0, log: Callable[[str], None]) -> list[tuple[int, Evaluation]]:
+def search(ev: Evaluator, spec: SynthesisSpec, budget: Budget, x0,
+           log: Callable[[str], None]) -> list[tuple[int, Evaluation]]:
     """Differential evolution from `x0` (in the initial population); every candidate judged through `ev`."""
     history: list[tuple[int, Evaluation]] = []
     gen = [0]

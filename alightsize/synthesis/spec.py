@@ -141,7 +141,8 @@ def _free(node: Node, root: Node) -> tuple[FreeParameter, ...]:
 def _budget(node: Node, default: Budget) -> Budget:
     return Budget(node.integer("generations", default.generations, minimum=0, maximum=1000),
                   node.integer("population", default.population, minimum=2, maximum=200),
-                  node.integer("samples", default.samples, minimum=0, maximum=5000) if node.has("samples") else default.samples)
+                  node.integer("samples", default.samples, minimum=0, maximum=5000) if node.has("samples")
+                  else default.samples)
 
 
 def read_synthesis(path: str | Path) -> SynthesisSpec:
@@ -190,8 +191,8 @@ def free_parameter(spec: SynthesisSpec, key: str) -> FreeParameter:
     for p in spec.free:
         if p.key == key:
             return p
-    raise InputError("(start)", key, "a free parameter of [synthesis.free] (" + ", ".join(p.key for p in spec.free) + ")",
-                     repr(key))
+    raise InputError("(start)", key,
+                     "a free parameter of [synthesis.free] (" + ", ".join(p.key for p in spec.free) + ")", repr(key))
 
 
 def parse_start(spec: SynthesisSpec, items: list[str]) -> dict[str, float]:

@@ -58,13 +58,13 @@ class WeightSpec:
                             (("K", p["k"], "dimensionless"), ("ρ/ρTM", dr, "dimensionless"),
                              ("l/lTM", p["length_ratio"], "dimensionless"), ("A/ATM", ar, "dimensionless"),
                              ("WTM", p["model_weight"], "mass")), w, "mass")]
-        l = p.get("length") or length
+        span = p.get("length") or length
         if self.method == "tube":
             d = p["diameter"] or section.mean_diameter
             t = p["wall"] or section.wall
-            w = tube_weight(rho, d, t, l)
+            w = tube_weight(rho, d, t, span)
             steps = [Step("Weight", "W", "{ρ} π {d} {t} {l}", (("ρ", rho, "density"), ("d", d, "length"),
-                                                              ("t", t, "length"), ("l", l, "length")), w, "mass")]
+                                                              ("t", t, "length"), ("l", span, "length")), w, "mass")]
         elif self.method == "disc":
             d = p["diameter"] or section.dims["diameter"]
             t = p["thickness"] or section.dims["thickness"]
@@ -78,16 +78,17 @@ class WeightSpec:
                            ("t", t, "length")), w, "mass")]
         else:  # prism
             a = p["area"] if p["area"] is not None else section.area()
-            w = prism_weight(rho, a, l)
-            steps = [Step("Weight", "W", "{ρ} {A} {l}", (("ρ", rho, "density"), ("A", a, "area"), ("l", l, "length")),
-                          w, "mass")]
+            w = prism_weight(rho, a, span)
+            steps = [Step("Weight", "W", "{ρ} {A} {l}",
+                          (("ρ", rho, "density"), ("A", a, "area"), ("l", span, "length")), w, "mass")]
         if p["allowance"]:
             w_allow = w * p["allowance"]
             steps.append(Step("Allowance", "ΔW", "{f} {W}", (("f", p["allowance"], "dimensionless"), ("W", w, "mass")),
                               w_allow, "mass"))
             w += w_allow
         if p["extra"]:
-            steps.append(Step("Extra (bolts, fittings)", "ΔW", "{ΔW}", (("ΔW", p["extra"], "mass"),), p["extra"], "mass"))
+            steps.append(Step("Extra (bolts, fittings)", "ΔW", "{ΔW}", (("ΔW", p["extra"], "mass"),), p["extra"],
+                              "mass"))
             w += p["extra"]
         return w, steps
 

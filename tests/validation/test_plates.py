@@ -101,7 +101,8 @@ def hub_bvp(a, b, edge, nu=NU):
 
     r = np.linspace(b, a, 401)
     h, u = a - b, (r - b) / (a - b)                    # start: the cubic with f(b) = b, f'(b) = 1, f(a) = f'(a) = 0
-    cubic = [b * (1 - 3 * u * u + 2 * u ** 3) + h * u * (1 - u) ** 2, b * (-6 * u + 6 * u * u) / h + (1 - u) * (1 - 3 * u),
+    cubic = [b * (1 - 3 * u * u + 2 * u ** 3) + h * u * (1 - u) ** 2,
+             b * (-6 * u + 6 * u * u) / h + (1 - u) * (1 - 3 * u),
              b * (-6 + 12 * u) / h ** 2 + (-4 + 6 * u) / h, b * 12 / h ** 3 + 6 / h ** 2 + 0 * u]
     sol = solve_bvp(rhs, bc, r, np.vstack(cubic), tol=1e-9, max_nodes=100_000)
     assert sol.success, sol.message
@@ -125,7 +126,8 @@ def _ring(n, s, a, p, nu):
     def logs(r, kind):
         lr = np.log(r)
         if kind == 0:
-            return [np.stack([lr, 1 / r, -1 / r ** 2, 2 / r ** 3]), np.stack([r * r * lr, 2 * r * lr + r, 2 * lr + 3, 2 / r])]
+            return [np.stack([lr, 1 / r, -1 / r ** 2, 2 / r ** 3]),
+                    np.stack([r * r * lr, 2 * r * lr + r, 2 * lr + 3, 2 / r])]
         return [np.stack([1 / r, -1 / r ** 2, 2 / r ** 3, -6 / r ** 4]), np.stack([r * lr, lr + 1, 1 / r, -1 / r ** 2])]
 
     def basis(r, inner):
@@ -321,7 +323,8 @@ def test_1954_hub_formula_is_kept_only_where_stated():
     low = [plates.hub_couple(1.0, 1.0, 1.0, x, M, "fixed")[0] / plates.fixed_center_moment(1.0, 1.0, 1.0, x, M)[0]
            for x in ratios]
     assert 1.6 <= min(low) and max(low) <= 2.4
-    assert plates.fixed_center_moment(1.0, 1.0, 1.0, 0.42, M)[0] > 0 > plates.fixed_center_moment(1.0, 1.0, 1.0, 0.44, M)[0]
+    assert plates.fixed_center_moment(1.0, 1.0, 1.0, 0.42, M)[0] > 0
+    assert plates.fixed_center_moment(1.0, 1.0, 1.0, 0.44, M)[0] < 0
 
 
 # ------------------------------------------------------------------ load W over a circle r0 at radius p
