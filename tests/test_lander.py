@@ -227,8 +227,8 @@ def test_1966_lander_files_reproduce_their_design_configs(name):
     assert new.checks_ok == old.checks_ok
 
 
-@pytest.mark.parametrize("written, found", [('[0.5, 2.4]', "vertical_speed[0]"), ('["1 m", "3 m"]', "vertical_speed[0]"),
-                                            ('"2 m"', "vertical_speed")])
+@pytest.mark.parametrize("written, found", [('[0.5, 2.4]', "vertical_speed[0]"),
+                                            ('["1 m", "3 m"]', "vertical_speed[0]"), ('"2 m"', "vertical_speed")])
 def test_an_envelope_error_names_the_envelope_key(tmp_path, written, found):
     """A speed without a unit or with the wrong one is reported at the key written, not at the scene key the
     nominal landing is derived from (`initial.velocity`)."""
