@@ -146,6 +146,18 @@ def holds(scene: Scene) -> bool:
     return min(scene.mu_static, scene.mu_dynamic) >= HELD_FRICTION
 
 
+def variant(scene: Scene) -> str:
+    """The compiled variant a scene runs on, in words: its leg kinds and footpad model (each compiles once per
+    machine: numba specializes the kernel on them)."""
+    kinds = sorted({"articulated" if isinstance(leg, ArticulatedLeg) else "telescoping" for leg in scene.legs})
+    pads = ("footpads with mass on soil" if scene.soil is not None else "footpads with mass" if scene.footpad_mass > 0
+            else "footpads that hold" if holds(scene) else "sliding footpads")
+    return f"{' and '.join(kinds)} legs, {pads}"
+
+
+compiling_for = ""          # the variant of the last landing set up here (read by a compile notice, if any)
+
+
 def axisymmetric(inertia: np.ndarray) -> bool:
     return abs(inertia[0] - inertia[1]) <= 1e-9 * max(inertia[0], inertia[1])
 
@@ -247,6 +259,8 @@ def kinetic(scene: Scene, y: np.ndarray) -> float:
 
 def simulate(scene: Scene, ctl: Controls) -> Result:
     """Integrate from first contact to ctl.t_final or an outcome the loop detects."""
+    global compiling_for
+    compiling_for = variant(scene)
     wall = time.perf_counter()
     run = _Run(scene, ctl)
     y = initial_state(scene, run)

@@ -82,3 +82,31 @@ def test_a_user_numba_cache_dir_wins(tmp_path):
            "PYTHONDONTWRITEBYTECODE": "1"}
     subprocess.run([sys.executable, "-c", RUN, str(src)], env=env, capture_output=True, check=True)
     assert any(numba_dir.rglob("kernel.twice-*.nbi")) and not cache.exists()
+
+
+def test_the_notice_names_the_simulator_variant_it_compiles(monkeypatch):
+    """A compilation of the simulator is announced with the variant of the landing being set up (leg kinds and
+    footpad model, alightsize_sim.landing.variant), once per variant, with its time as soon as it ends."""
+    import dataclasses
+    from types import SimpleNamespace
+    from numba.core import event
+    import alightsize_sim.landing as landing
+    from alightsize.common.compile_notice import _Notice
+    from alightsize.model.scene_config import read_scene
+    from conftest import EXAMPLES
+    scene = read_scene(EXAMPLES / "scenes" / "telescoping_config2.toml").scene
+    assert landing.variant(scene) == "telescoping legs, footpads that hold"
+    sliding = dataclasses.replace(scene, mu_static=0.5, mu_dynamic=0.4)
+    assert landing.variant(sliding) == "telescoping legs, sliding footpads"
+    assert landing.variant(dataclasses.replace(scene, footpad_mass=5.0)) == "telescoping legs, footpads with mass"
+    kernel = SimpleNamespace(py_func=SimpleNamespace(__module__="alightsize_sim.landing_kernel"))
+    out = io.StringIO()
+    notice = _Notice(out)
+    monkeypatch.setattr(landing, "compiling_for", "telescoping legs, sliding footpads")
+    for _ in range(2):                                   # the second compilation of the same variant: silent
+        notice.on_start(event.Event("numba:compile", event.EventStatus.START, {"dispatcher": kernel}))
+        notice.on_end(event.Event("numba:compile", event.EventStatus.END, {"dispatcher": kernel}))
+    lines = out.getvalue().splitlines()
+    assert lines[0] == ("alightsize: compiling the landing simulator for telescoping legs, sliding footpads "
+                        "(once per machine; cached after)...")
+    assert len(lines) == 2 and lines[1].startswith("alightsize: compiled in ")

@@ -1,4 +1,5 @@
-"""One line on stderr while numba compiles the simulator (a fresh install's first run), and its time after.
+"""A line on stderr when numba starts compiling something new (the simulator's variant for a scene, on a fresh
+install's first run), and its time as soon as it is compiled.
 
 Compiled kernels are cached on disk (numba `cache=True`); numba reports a compilation only on a cache miss, so
 later runs print nothing. Worker processes forked from the announcing one stay silent.
@@ -15,20 +16,34 @@ from typing import TextIO
 from numba.core import event
 
 
+def _what(ev: event.Event) -> str:
+    """What a top-level compilation is for: the landing simulator's variant (alightsize_sim.landing.variant of the
+    landing being set up), or the compiled function's module."""
+    module = getattr(getattr(ev.data.get("dispatcher"), "py_func", None), "__module__", "") or ""
+    if module.startswith("alightsize_sim"):
+        variant = getattr(sys.modules.get("alightsize_sim.landing"), "compiling_for", "")
+        return f"the landing simulator for {variant}" if variant else "the landing simulator"
+    return module.rsplit(".", 1)[-1].replace("_", " ") or "a compiled function"
+
+
 class _Notice(event.Listener):
-    """Prints when the first top-level compilation starts; counts the seconds spent compiling."""
+    """Announces each new thing compiled (the first top-level compilation for it) and its time once done; counts
+    the seconds spent compiling."""
 
     def __init__(self, stream: TextIO):
         self.stream, self.depth, self.started, self.seconds = stream, 0, None, 0.0
-        self.pid = os.getpid()
+        self.pid, self.announced, self.current = os.getpid(), set(), None
 
     def on_start(self, ev: event.Event) -> None:
         if os.getpid() != self.pid:
             return
         if self.depth == 0:
-            if self.started is None:
-                print("alightsize: compiling the landing simulator for this machine (first run only; cached after)...",
-                      file=self.stream, flush=True)
+            what = _what(ev)
+            self.current = what if what not in self.announced else None
+            if self.current:
+                self.announced.add(what)
+                print(f"alightsize: compiling {what} (once per machine; cached after)...", file=self.stream,
+                      flush=True)
             self.started = time.perf_counter()
         self.depth += 1
 
@@ -37,7 +52,10 @@ class _Notice(event.Listener):
             return
         self.depth -= 1
         if self.depth == 0:
-            self.seconds += time.perf_counter() - self.started
+            took = time.perf_counter() - self.started
+            self.seconds += took
+            if self.current:
+                print(f"alightsize: compiled in {took:.0f} s", file=self.stream, flush=True)
 
 
 @contextmanager
@@ -49,5 +67,3 @@ def compile_notice(stream: TextIO = sys.stderr):
         yield notice
     finally:
         event.unregister("numba:compile", notice)
-        if notice.started is not None:
-            print(f"alightsize: compiled in {notice.seconds:.0f} s", file=stream, flush=True)
