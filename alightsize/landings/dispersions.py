@@ -43,17 +43,10 @@ class Dispersion:
         """One sample as a scene value: "x unit" (x a float), a number, or per-cell nested lists."""
         return self._scene_value(self.draw(rng, cells if self.per_cell else ()))
 
-    def probes(self, cells: tuple[int, int] | None = None) -> list:
-        """Scene values spanning the draws: the centre (mean, or middle of a uniform range), then the ends (the
-        bounds; mean -/+ 3 sd for a normal, which 99.7 % of the draws fall between)."""
-        if self.dist == "normal":
-            mean, sd = self.params
-            points = (mean, mean - 3 * sd, mean + 3 * sd)
-        elif self.dist == "uniform":
-            points = ((self.params[0] + self.params[1]) / 2, *self.params)
-        else:
-            points = self.params[:1] + self.params[2:]
-        return [self._scene_value(np.full(cells if self.per_cell else (), x)) for x in points]
+    def centre(self, cells: tuple[int, int] | None = None):
+        """The distribution's centre (the mean, or the middle of a uniform range) as a scene value."""
+        mid = (self.params[0] + self.params[1]) / 2 if self.dist == "uniform" else self.params[0]
+        return self._scene_value(np.full(cells if self.per_cell else (), mid))
 
     def _scene_value(self, x: np.ndarray):
         if self.per_cell:
