@@ -15,19 +15,25 @@ from alightsize import __version__
 from alightsize.common.errors import InputError, InputWarning
 from alightsize.common.compile_notice import compile_notice
 from alightsize.common.lock import output_folder
+from alightsize.common.staging import Stage
 from alightsize.common.resources import data_dir
 
 
-def _design(args) -> int:
+def _wrote(stage: Stage, files: list[Path]) -> str:
+    """The `wrote ...` line: each file at the path it has once published."""
+    return "wrote " + ", ".join(str(stage.final(f)) for f in files)
+
+
+def _design(args, stage: Stage) -> int:
     from alightsize.pipeline.design import run_design
     from alightsize.pipeline.lander import read_input
     from alightsize.reports.design_report import write_design
     res = run_design(read_input(args.config), Path(args.out) / "landings", progress=True)
-    files = write_design(res, Path(args.out))
+    files = write_design(res, stage.path)
     lines = res.summary_lines(res.config.units)
     print(f"{res.config.configuration}: {lines[0]}")
     print("\n".join("  " + line for line in lines[1:]))
-    print(f"wrote {', '.join(str(f) for f in files)}")
+    print(_wrote(stage, files))
     return 0 if res.ok else 1
 
 
@@ -50,7 +56,7 @@ def _audit(args) -> int:
     return 0 if res.checks_ok else 1
 
 
-def _loads(args) -> int:
+def _loads(args, stage: Stage) -> int:
     import time
     from alightsize.loads.quasi_static import run_loads
     from alightsize.loads.config import read_loads
@@ -60,30 +66,30 @@ def _loads(args) -> int:
     res = run_loads(cfg)
     wall = time.perf_counter() - t0
     n = sum(cfg.grid.size(c.psi_initial, c.psi_final) for c in cfg.cases)
-    files = write_loads(res, Path(args.out), args.units)
+    files = write_loads(res, stage.path, args.units)
     print(f"{len(cfg.cases)} configuration(s), {n:,} positions in {wall:.2f} s; "
           f"{len(cfg.combined)} combination(s){'; telescoping free body' if cfg.telescoping else ''}")
-    print("wrote " + ", ".join(str(f) for f in files))
+    print(_wrote(stage, files))
     return 0
 
 
-def _simulate(args) -> int:
+def _simulate(args, stage: Stage) -> int:
     from alightsize.landings.output import summary, write_landing
     from alightsize.model.scene_config import read_scene
     from alightsize_sim.landing import simulate
     cfg = read_scene(args.scene)
     res = simulate(cfg.scene, cfg.controls)
-    files = write_landing(cfg, res, Path(args.out))
+    files = write_landing(cfg, res, stage.path)
     s = summary(cfg, res)
     print(f"{cfg.name}: {s['outcome']} at {s['t_end_s']:.4f} s ({s['reason']}); "
           f"peak XDD(3) {s['peak']['xdd_g'][2]:.2f} g; "
           f"energy closure {s['energy']['closure_rel']:.2e}; {res.steps} steps, {res.rhs_evals} evaluations, "
           f"{res.wall_s * 1e3:.1f} ms")
-    print("wrote " + ", ".join(str(f) for f in files))
+    print(_wrote(stage, files))
     return 1 if (args.require_success and s["outcome"] == "failed") else 0
 
 
-def _sweep(args) -> int:
+def _sweep(args, stage: Stage) -> int:
     from alightsize.landings.study import read_study
     from alightsize.landings.sweep import run_sweep
     from alightsize.reports.sweep_report import write_results
@@ -99,12 +105,12 @@ def _sweep(args) -> int:
         print(f"alightsize: interrupted; every finished run is stored in {out / 'runs.sqlite'}: "
               "run the same command again to finish", file=sys.stderr)
         return 130
-    files = write_results(study, out)
+    files = write_results(study, out, stage.path)
     print(f"{stats.computed} run(s) computed in {stats.wall_s:.1f} s, {stats.skipped} already done"
           f"{f' ({stats.reused} of them stored under another id)' if stats.reused else ''}, "
           f"{stats.failed} failed")
-    print("wrote " + ", ".join(str(f) for f in files))
-    failed = json.loads((out / "outcomes.json").read_text())["failed"]
+    print(_wrote(stage, files))
+    failed = json.loads(files[0].read_text())["failed"]
     return 1 if (args.require_success and failed) else 0
 
 
@@ -117,7 +123,7 @@ def _backend(args) -> tuple[str, int | None]:
     return backend, workers
 
 
-def _synthesize(args) -> int:
+def _synthesize(args, stage: Stage) -> int:
     from alightsize.reports.synthesis_report import write_synthesis
     from alightsize.synthesis.search import synthesize
     from alightsize.synthesis.spec import parse_start, read_synthesis
@@ -131,7 +137,7 @@ def _synthesize(args) -> int:
         print(f"alightsize: interrupted; every landing and candidate is stored in {out / 'runs.sqlite'}: "
               "run the same command again to resume", file=sys.stderr)
         return 130
-    files = write_synthesis(res, out)
+    files = write_synthesis(res, stage.path)
     b, st = res.best, res.stats
     every = res.check_rates[-1] if res.check_rates else None
     print(f"{'PASS' if res.ok else 'FAIL'}: " + (f"lightest feasible system {100 * b.fraction:.3f} % of the capsule "
@@ -144,15 +150,15 @@ def _synthesize(args) -> int:
         print(f"  {p.key} = {p.show(v)}")
     print(f"  {st['candidates']} candidates, {st['landings_computed']} landings computed, "
           f"{st['landings_stored']} found stored, {st['wall_s']:.0f} s")
-    print(f"wrote {', '.join(str(f) for f in files[:4])} and charts; the chosen design in {out / 'chosen'}")
+    print(f"{_wrote(stage, files[:4])} and charts; the chosen design in {out / 'chosen'}")
     return 0 if res.ok else 1
 
 
-def _bench(args) -> int:
+def _bench(args, stage: Stage) -> int:
     from alightsize.landings.bench import run_bench, write_bench
     data = run_bench(quick=args.quick, progress=lambda msg: print(msg, flush=True), only=tuple(args.scene or ()))
-    files = write_bench(data, Path(args.out))
-    print("wrote " + ", ".join(str(f) for f in files))
+    files = write_bench(data, stage.path)
+    print(_wrote(stage, files))
     return 0
 
 
@@ -174,7 +180,7 @@ def _scale(args) -> int:
     return 0
 
 
-def _reports(args) -> int:
+def _reports(args, stage: Stage) -> int:
     from alightsize.pipeline.design import run_design
     from alightsize.reports.design_report import write_design
     from alightsize.pipeline.config import read_design
@@ -183,11 +189,11 @@ def _reports(args) -> int:
         raise InputError(args.examples, "", "a folder of design configs (*.toml)", "none")
     for cfg in configs:
         res = run_design(read_design(cfg))
-        write_design(res, Path(args.out) / cfg.stem)
+        write_design(res, stage.path / cfg.stem)
         print(f"{cfg.stem}: {res.verdict()}")
     if (Path(args.examples) / "drops").is_dir():
         from alightsize.reports.drop_report import write_drop_report
-        write_drop_report(Path(args.out) / "drops", Path(args.examples) / "drops")
+        write_drop_report(stage.path / "drops", Path(args.examples) / "drops")
         print("drops: simulated drop tests beside Tables 6-13 (drops.html, drops.md, drops.json)")
     return 0
 
@@ -339,8 +345,11 @@ def main(argv: list[str] | None = None) -> int:
             _check_outputs(args)
             if getattr(args, "out", None) is None:
                 return args.run(args)
-            with output_folder(Path(args.out)):
-                return args.run(args)
+            with output_folder(Path(args.out)) as stage:
+                code = args.run(args, stage)
+                if code in (0, 1):                 # written whole (a failed check included): publish
+                    stage.publish()
+                return code
     except InputError as exc:
         print(f"alightsize: error: {exc}", file=sys.stderr)
         return 2

@@ -9,7 +9,16 @@ read_soil, read_material. Outcomes: ok; InputError (keyless when it names no key
 internal (any other exception: a bug); nonfinite (a NaN or inf in the result that the unmutated file does
 not have); hang (over --timeout s; the worker is restarted). Prints counts per kind and the distinct bugs,
 deduplicated by exception type and the innermost alightsize frame.
-Usage: python benchmarks/fuzz_inputs.py [-n 10000] [--seed 1] [--kind KIND ...] [--json FILE] [--show CASE]
+
+With --landings the cases run the command line end to end instead (kinds `simulate` and `sweep`): one
+mutation of a short landing scene (telescoping configuration 2, t_final 0.3 s) or of a study of 2 runs on
+it, then `alightsize simulate SCENE --out out` or `alightsize sweep STUDY --out out --serial` in a worker
+process (cli.main, the folder of the case as working directory). Outcomes: exit0, exit1, exit2 (bad input
+naming a key); keyless (exit 2 naming none); internal (exit 3, or a sweep run stored failed by an exception
+other than bad input); nonfinite (NaN or inf in summary.json / outcomes.json); outside (a file made or changed
+in the case folder outside --out); hang.
+Usage: python benchmarks/fuzz_inputs.py [-n 10000] [--seed 1] [--kind KIND ...] [--landings] [--json FILE]
+       [--show CASE]
 """
 
 from __future__ import annotations
@@ -48,10 +57,18 @@ KINDS = {
 FILE_ERRORS = ("an existing TOML file", "a readable UTF-8 TOML file", "valid TOML",
                "TOML nested less deeply than Python's recursion limit")
 OUTCOMES = ("ok", "input_error", "keyless", "internal", "nonfinite", "hang")
+PASSING = ("ok", "input_error", "exit0", "exit1", "exit2")
+# End to end (--landings): the file each command kind mutates, beside the other, in the case folder.
+LANDINGS = {"simulate": "scene.toml", "sweep": "study.toml"}
+LANDING_OUTCOMES = ("exit0", "exit1", "exit2", "keyless", "internal", "nonfinite", "outside", "hang")
+LANDING_SCENE = _E + "scenes/telescoping_config2.toml"
+T_FINAL = "0.3 s"        # the impact (35 ft/s on 0.7 ft of stroke, over in about 0.05 s) and the settling after
 
 
 def files(kind: str) -> list[str]:
-    """The shipped files of `kind`, relative to the repository root."""
+    """The shipped files of `kind`, relative to the repository root (the case file of an end-to-end kind)."""
+    if kind in LANDINGS:
+        return [LANDINGS[kind]]
     out: list[str] = []
     for pattern in KINDS[kind]:
         out += [str(p.relative_to(ROOT)) for p in sorted(ROOT.glob(pattern)) if str(p.relative_to(ROOT)) not in out]
@@ -284,8 +301,10 @@ def nonfinite(obj: Any, where: str = "", seen: set | None = None, depth: int = 0
 
 
 def run_case(kind: str, path: Path, text: str) -> dict:
-    """Write `text` to `path`, read it; the outcome as a dict."""
+    """Write `text` to `path`, read it (or run the command, for an end-to-end kind); the outcome as a dict."""
     from alightsize.common.errors import InputError
+    if kind in LANDINGS:
+        return run_cli(kind, path.parent, text)
     path.write_text(text, encoding="utf-8")
     t0 = time.perf_counter()
     try:
@@ -299,6 +318,103 @@ def run_case(kind: str, path: Path, text: str) -> dict:
     except Exception as exc:  # noqa: BLE001 - every other exception is the bug being looked for
         return _internal(exc, t0)
     return {"outcome": "ok", "nonfinite": nonfinite(result), "s": time.perf_counter() - t0}
+
+
+# ---------------------------------------------------------------------------------------------------- end to end
+
+
+def landing_sources() -> dict[str, dict]:
+    """The parsed files of the end-to-end cases: the scene (t_final short) and a study of 2 runs on it (a grid
+    value, a dispersion, criteria, histories)."""
+    import tomllib
+    scene = tomllib.loads((ROOT / LANDING_SCENE).read_text(encoding="utf-8"))
+    scene["controls"]["t_final"] = T_FINAL
+    study = {"study": {"name": "fuzz", "seed": 3, "samples": 2, "history": True},
+             "scenes": {"c2": LANDINGS["simulate"]},
+             "grid": {"terrain.slope": ["5 deg"]},
+             "dispersions": {"initial.heading": {"dist": "uniform", "low": "-30 deg", "high": "30 deg"}},
+             "criteria": {"preset": "instrument"}}
+    return {LANDINGS["simulate"]: scene, LANDINGS["sweep"]: study}
+
+
+_ERROR = re.compile(r"alightsize: error: (?P<file>.+?): (?P<key>.+?): expected (?P<expected>.*), found ", re.DOTALL)
+
+
+def _strict_json(path: Path) -> list[str]:
+    """The NaN/Infinity tokens of a JSON file, by the path of the value holding them."""
+    bad: list[str] = []
+
+    def walk(v: Any, where: str) -> None:
+        if isinstance(v, float) and not math.isfinite(v):
+            bad.append(where or ".")
+        items = v.items() if isinstance(v, dict) else enumerate(v) if isinstance(v, list) else ()
+        for k, x in items:
+            walk(x, f"{where}[{k}]" if isinstance(k, int) else f"{where}.{k}")
+    walk(json.loads(path.read_text(encoding="utf-8")), "")
+    return [f"{path.name}:{w}" for w in bad]
+
+
+def _tree(folder: Path, skip: Path) -> dict[str, bytes]:
+    return {str(p.relative_to(folder)): p.read_bytes() for p in sorted(folder.rglob("*"))
+            if p.is_file() and skip not in p.parents}
+
+
+def run_cli(kind: str, folder: Path, text: str) -> dict:
+    """A fresh `folder` holding the case file (`text`) and the other, unmutated; the command run there by
+    cli.main; the outcome as a dict."""
+    import contextlib
+    import io
+    import os
+    import sqlite3
+
+    from alightsize.cli import main
+    shutil.rmtree(folder, ignore_errors=True)
+    folder.mkdir(parents=True)
+    for name, data in landing_sources().items():
+        (folder / name).write_text(text if name == LANDINGS[kind] else dumps(data), encoding="utf-8")
+    out = folder / "out"
+    before = _tree(folder, out)
+    argv = ["simulate", LANDINGS[kind], "--out", "out"] if kind == "simulate" else \
+        ["sweep", LANDINGS[kind], "--out", "out", "--serial", "--quiet"]
+    err, cwd, t0 = io.StringIO(), os.getcwd(), time.perf_counter()
+    try:
+        os.chdir(folder)
+        with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(err):
+            code = main(argv)
+    finally:
+        os.chdir(cwd)
+    res: dict[str, Any] = {"outcome": f"exit{code}", "s": time.perf_counter() - t0}
+    message = err.getvalue()
+    if code == 2:
+        m = _ERROR.search(message)
+        named = m is not None and (m["key"] != "(top level)" or m["expected"] in FILE_ERRORS)
+        res.update(outcome="exit2" if named else "keyless", message=message.strip()[-300:],
+                   **({"error_file": m["file"], "error_key": m["key"]} if m else {}))
+    elif code not in (0, 1):
+        frames = re.findall(r'File "([^"]*alightsize[^"]*)", line (\d+), in (\S+)', message)
+        where = f"{Path(frames[-1][0]).name}:{frames[-1][1]} {frames[-1][2]}" if frames else "(no frame)"
+        return {**res, "outcome": "internal", "type": f"exit {code}", "where": where, "message": message[-600:]}
+    else:
+        reports = [out / n for n in ("summary.json", "outcomes.json") if (out / n).exists()]
+        res["values"] = [v for f in reports for v in _strict_json(f)]
+        if res["values"]:
+            res["outcome"] = "nonfinite"
+        if (out / "runs.sqlite").exists():
+            con = sqlite3.connect(out / "runs.sqlite")
+            failed = con.execute("SELECT message FROM runs WHERE status = 'failed'").fetchall()
+            con.close()
+            raised = [m for (m,) in failed if not m.startswith("bad input: ")]
+            res["runs_failed"] = len(failed)
+            if raised:
+                return {**res, "outcome": "internal", "type": "run raised", "where": raised[0].split(":")[0],
+                        "message": raised[0][:300]}
+    after = _tree(folder, out)
+    moved = sorted(k for k in set(before) | set(after) if before.get(k) != after.get(k))
+    moved += [str(p.relative_to(folder)) for p in out.rglob(".*") if p.name.startswith((".staging-", ".publishing-"))
+              or p.name.endswith(".tmp")] if out.exists() else []     # what a finished command leaves behind
+    if moved:
+        res.update(outcome="outside", files=moved[:5])
+    return res
 
 
 def _internal(exc: BaseException, t0: float) -> dict:
@@ -356,6 +472,11 @@ class Worker:
 # ---------------------------------------------------------------------------------------------------- driver
 
 
+def target(tmp: Path, kind: str, rel: str) -> Path:
+    """Where case files of `kind` are written: beside the file they mutate, or in their own case folder."""
+    return tmp / "cases" / kind / rel if kind in LANDINGS else (tmp / rel).with_name(Path(rel).stem + ".fuzz.toml")
+
+
 def case(seed: int, i: int, kinds: list[str], sources: dict[str, dict]) -> tuple[str, str, dict, str, str]:
     """Case `i` of run `seed`: (kind, file, mutated data, key path, mutation); reproducible on its own."""
     rng = random.Random(f"{seed}:{i}")
@@ -377,30 +498,35 @@ def fuzz(n: int, seed: int, kinds: list[str], timeout: float, progress: bool = T
     try:
         for folder in ("examples", "materials"):
             shutil.copytree(ROOT / folder, tmp / folder)
-        sources = {rel: tomllib.loads((ROOT / rel).read_text(encoding="utf-8")) for k in kinds for rel in files(k)}
+        sources = {rel: tomllib.loads((ROOT / rel).read_text(encoding="utf-8"))
+                   for k in kinds if k not in LANDINGS for rel in files(k)}
+        if any(k in LANDINGS for k in kinds):
+            sources.update(landing_sources())
+            run_cli("simulate", tmp / "warm", dumps(sources[LANDINGS["simulate"]]))   # compiled before forking
         worker = Worker()
         baseline = {}
         for kind in kinds:
             for rel in files(kind):
-                target = (tmp / rel).with_name(Path(rel).stem + ".fuzz.toml")
-                res = worker.run(kind, target, dumps(sources[rel]), 60.0)
-                if res["outcome"] != "ok":
+                res = worker.run(kind, target(tmp, kind, rel), dumps(sources[rel]), 120.0)
+                if res["outcome"] != ("exit0" if kind in LANDINGS else "ok"):
                     raise SystemExit(f"{rel} unmutated: {res}")
-                baseline[rel] = set(res["nonfinite"])
+                baseline[rel] = set(res.get("nonfinite", ()))
         counts = {k: Counter() for k in kinds}
         findings, t0 = [], time.perf_counter()
         for i in range(n):
             kind, rel, data, key, desc = case(seed, i, kinds, sources)
-            target = (tmp / rel).with_name(Path(rel).stem + ".fuzz.toml")
-            res = worker.run(kind, target, dumps(data), timeout)
+            res = worker.run(kind, target(tmp, kind, rel), dumps(data), timeout)
             if res["outcome"] == "ok" and set(res["nonfinite"]) - baseline[rel]:
                 res = {**res, "outcome": "nonfinite", "values": sorted(set(res["nonfinite"]) - baseline[rel])[:5]}
             counts[kind][res["outcome"]] += 1
             counts[kind]["cases"] += 1
-            if res["outcome"] not in ("ok", "input_error"):
+            if kind in LANDINGS:       # how many errors name the mutated file; how many sweep runs failed on input
+                counts[kind]["exit2 naming the case file"] += str(res.get("error_file", "")).endswith(rel)
+                counts[kind]["runs failed on input"] += res.get("runs_failed", 0)
+            if res["outcome"] not in PASSING:
                 res.pop("nonfinite", None)
                 findings.append({"case": i, "kind": kind, "file": rel, "key": key, "mutation": desc, **res})
-            if progress and (i + 1) % 500 == 0:
+            if progress and (i + 1) % (25 if kinds[0] in LANDINGS else 500) == 0:
                 print(f"  {i + 1} cases, {time.perf_counter() - t0:.0f} s", file=sys.stderr)
         worker.stop()
         return {"seed": seed, "n": n, "wall_s": time.perf_counter() - t0,
@@ -430,22 +556,30 @@ def main() -> None:
     ap.add_argument("-n", type=int, default=10000)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--kind", action="append", choices=sorted(KINDS), help="a file kind (repeatable; default all)")
-    ap.add_argument("--timeout", type=float, default=5.0, help="seconds after which a read counts as a hang")
+    ap.add_argument("--landings", action="store_true", help="run the command line end to end on a mutated landing "
+                    "scene or study (kinds simulate and sweep) instead of the readers")
+    ap.add_argument("--timeout", type=float, help="seconds after which a case counts as a hang (5; 120 with --landings)")
     ap.add_argument("--json", type=Path)
     ap.add_argument("--show", type=int, metavar="CASE", help="print case CASE's mutated file and stop")
     args = ap.parse_args()
-    kinds = args.kind or list(KINDS)
+    kinds = list(LANDINGS) if args.landings else args.kind or list(KINDS)
+    timeout = args.timeout or (120.0 if args.landings else 5.0)
+    columns = LANDING_OUTCOMES if args.landings else OUTCOMES
     if args.show is not None:
         import tomllib
-        sources = {rel: tomllib.loads((ROOT / rel).read_text(encoding="utf-8")) for k in kinds for rel in files(k)}
+        sources = landing_sources() if args.landings else \
+            {rel: tomllib.loads((ROOT / rel).read_text(encoding="utf-8")) for k in kinds for rel in files(k)}
         kind, rel, data, key, desc = case(args.seed, args.show, kinds, sources)
         print(f"# {kind} {rel}: {key}: {desc}\n{dumps(data)}")
         return
-    out = fuzz(args.n, args.seed, kinds, args.timeout)
+    out = fuzz(args.n, args.seed, kinds, timeout)
     print(f"{out['n']} cases, seed {out['seed']}, {out['wall_s']:.0f} s")
-    print(f"{'kind':10}{'cases':>7}" + "".join(f"{o:>13}" for o in OUTCOMES))
+    print(f"{'kind':10}{'cases':>7}" + "".join(f"{o:>13}" for o in columns))
     for kind, c in out["counts"].items():
-        print(f"{kind:10}{c.get('cases', 0):7d}" + "".join(f"{c.get(o, 0):13d}" for o in OUTCOMES))
+        print(f"{kind:10}{c.get('cases', 0):7d}" + "".join(f"{c.get(o, 0):13d}" for o in columns))
+    for kind, c in out["counts"].items() if args.landings else ():
+        print(f"{kind}: {c.get('exit2 naming the case file', 0)} of {c.get('exit2', 0) + c.get('keyless', 0)} exit-2 "
+              f"errors name the mutated file; {c.get('runs failed on input', 0)} sweep runs stored failed on bad input")
     print(f"\n{len(out['bugs'])} distinct findings:")
     for b in out["bugs"]:
         f = b["first"]

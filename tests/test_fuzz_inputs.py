@@ -57,3 +57,26 @@ def test_reader_refuses_bad_input_by_key(kind, tree, data):
     assert res["outcome"] in ("ok", "input_error"), (rel, key, desc, res)
     if res["outcome"] == "ok":
         assert not set(res["nonfinite"]) - tree["baseline"][rel], (rel, key, desc, res["nonfinite"])
+
+
+# End to end: the command line on one mutation of a short landing scene or of a study of 2 runs on it.
+E2E_EXAMPLES = 15          # per command; most stop at exit 2, a few land (10 ms) and draw their plots (2-3 s)
+
+
+@pytest.fixture(scope="module")
+def case_folder(tmp_path_factory) -> Path:
+    return tmp_path_factory.mktemp("e2e") / "case"
+
+
+@pytest.mark.parametrize("kind", sorted(fuzz.LANDINGS))
+@settings(max_examples=E2E_EXAMPLES, suppress_health_check=[HealthCheck.function_scoped_fixture,
+                                                            HealthCheck.too_slow, HealthCheck.data_too_large])
+@given(data=st.data())
+def test_the_command_line_on_a_mutated_landing_exits_0_1_or_2_and_writes_only_into_out(kind, case_folder, data):
+    """`alightsize simulate` / `sweep --serial` exits 0 or 1 with finite JSON outputs, every run that fails
+    failing on bad input, nothing made or changed beside --out and no staging left in it; or exits 2 naming
+    a key (or the file, for a file-level error). Never exit 3."""
+    rel = fuzz.LANDINGS[kind]
+    mutated, key, desc = fuzz.mutate(fuzz.landing_sources()[rel], lambda options: data.draw(st.sampled_from(options)))
+    res = fuzz.run_cli(kind, case_folder, fuzz.dumps(mutated))
+    assert res["outcome"] in ("exit0", "exit1", "exit2"), (key, desc, res)

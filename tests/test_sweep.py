@@ -231,6 +231,30 @@ def test_study_input_errors_exit_2(tmp_path, capsys):
     assert "dispersions.initial.velocity[1].dist" in str(e.value) and "lognormal" in str(e.value)
 
 
+@pytest.mark.parametrize("old, new, where, key, found", [
+    ('"-10 deg", "10 deg"]', '"-10 deg", "abc"]', 'grid."terrain.slope"[1]', "terrain.slope", "found 'abc'"),
+    ('"-10 deg", "10 deg"]', 'true, "10 deg"]', 'grid."terrain.slope"[0]', "terrain.slope", "found True"),
+    ('"-10 deg", "10 deg"]', '"-10 deg", "3 ft/s"]', 'grid."terrain.slope"[1]', "terrain.slope", "found '3 ft/s'"),
+    ('"terrain.slope" = [', '" " = [', 'grid." "[0]', '" "', "found '-10 deg'"),
+    ('low = "0 ft/s", high = "10 ft/s"', 'low = "0 deg", high = "10 deg"', 'dispersions."initial.velocity[1]"',
+     "initial.velocity[1]", "found a uniform distribution in degree centred on '5.0 degree'"),
+    ('low = "-90 deg", high = "90 deg"', 'low = 0, high = 1', 'dispersions."initial.heading"', "initial.heading",
+     "found a uniform distribution in plain numbers centred on 0.5"),
+    ('low = "-90 deg", high = "90 deg"', 'low = "-90 deg", high = "1e30 deg"', 'dispersions."initial.heading"',
+     "initial.heading", "found a uniform distribution in degree centred on '5e+29 degree'")])
+def test_a_grid_or_dispersion_value_the_scene_refuses_exits_2_before_any_run(tmp_path, capsys, old, new, where, key,
+                                                                             found):
+    """A value its scene key does not take (a word, true, another dimension, an unknown key, an angle of 5e29
+    deg at the centre of a dispersion) is named as written in the study, with what the scene key takes; nothing
+    is run (no run store)."""
+    path = _study(tmp_path, samples=2)
+    path.write_text(path.read_text().replace(old, new, 1))
+    assert main(["sweep", str(path), "--out", str(tmp_path / "o"), "--serial"]) == 2
+    err = capsys.readouterr().err
+    assert f"{path}: {where}: expected what the scene key {key} of {SCENE.name} takes: " in err and found in err
+    assert not (tmp_path / "o").exists()
+
+
 def test_history_per_run_on_request(tmp_path):
     """`history = true` keeps each run's history Parquet beside the store; its last time is the run's end."""
     import pandas as pd

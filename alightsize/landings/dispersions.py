@@ -41,10 +41,17 @@ class Dispersion:
 
     def value(self, rng: np.random.Generator, cells: tuple[int, int] | None = None):
         """One sample as a scene value: "x unit" (x a float), a number, or per-cell nested lists."""
+        return self._scene_value(self.draw(rng, cells if self.per_cell else ()))
+
+    def centre(self, cells: tuple[int, int] | None = None):
+        """The distribution's centre (the mean, or the middle of a uniform range) as a scene value."""
+        mid = (self.params[0] + self.params[1]) / 2 if self.dist == "uniform" else self.params[0]
+        return self._scene_value(np.full(cells if self.per_cell else (), mid))
+
+    def _scene_value(self, x: np.ndarray):
         if self.per_cell:
-            return [[float(x) for x in row] for row in self.draw(rng, cells)]
-        x = float(self.draw(rng))
-        return f"{x!r} {self.unit}" if self.unit else x
+            return [[float(v) for v in row] for row in x]
+        return f"{float(x)!r} {self.unit}" if self.unit else float(x)
 
 
 def _number(node: Node, key: str, value, unit: str | None) -> tuple[float, str]:

@@ -24,6 +24,7 @@ import itertools
 import json
 import re
 import string
+import warnings
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
@@ -33,7 +34,7 @@ import numpy as np
 from alightsize import __version__
 from alightsize.common.config import SEED_MAX, Node, is_file, load_toml
 from alightsize.landings.dispersions import Dispersion, read_dispersion
-from alightsize.common.errors import InputError
+from alightsize.common.errors import InputError, InputWarning
 from alightsize.landings.criteria import Criteria, read_criteria
 from alightsize.landings.output import outcome
 from alightsize.model.scene_config import SceneConfig, load_scene_toml, read_scene
@@ -149,6 +150,65 @@ def _grid_points(grid: Node, scenes: dict) -> list[tuple]:
              None) for n, c in enumerate(combos)]
 
 
+def _scene_key(key: str) -> str:
+    """A dotted scene key as the scene's errors name it (a blank name quoted, as Node.key writes it)."""
+    return ".".join(k if k.strip() else json.dumps(k) for k in key.split("."))
+
+
+def _about(error_key: str, key: str) -> bool:
+    """Whether a scene error at `error_key` concerns the scene key `key` (the key, an element or a part of
+    it, or the array or table it indexes into)."""
+    inner, outer = sorted((error_key, _scene_key(key)), key=len)
+    return outer == inner or outer.startswith((inner + ".", inner + "["))
+
+
+def _refusal(scene: Path, runs: list[dict], key: str, value) -> InputError | None:
+    """The scene reader's error about `key` when `value` is set there in every run of `runs` (the other
+    overrides of each), None when one of them takes it."""
+    found = None
+    for run in runs:
+        try:
+            with warnings.catch_warnings():           # a check, not a run: the runs warn
+                warnings.simplefilter("ignore", InputWarning)
+                read_scene(scene, {**run, key: value})
+        except InputError as exc:
+            if not _about(exc.key, key):
+                return None
+            found = found or exc
+        else:
+            return None
+    return found
+
+
+def _check_scene_values(path: Path, grid: Node | None, dispersions: list[Dispersion], points: list[tuple],
+                        scenes: dict) -> None:
+    """Each grid value, and each dispersion at its centre, read by the scene reader at the key it sets on every
+    scene it is set on, alone and in the scene's first run (its first grid point or table row, the dispersions
+    at their centres): one refused there both ways (a word or true where a speed is asked, a length where an
+    angle is, an angle of 1e30 deg) is refused before any run, as the runs it sets would fail. A value refused
+    only beside other values (a dynamic friction above one static friction of the grid) is left to fail its
+    runs."""
+    axes = {k: v for k, v in (grid.data.items() if grid else ()) if k != "scene"}
+    for skey, first in {p[1]: p[2] for p in reversed(points)}.items():
+        scene = scenes[skey]
+        centres = {d.key: d.centre(_cell_shape(scene) if d.per_cell else None) for d in dispersions}
+        runs = [{}, {**first, **centres}]
+        for k, values in axes.items():
+            for i, v in enumerate(values):
+                if exc := _refusal(scene, runs, k, v):
+                    raise _as_written(path, f"grid.{json.dumps(k)}[{i}]", scene, k, exc, repr(v))
+        for d in dispersions:
+            if exc := _refusal(scene, runs, d.key, centres[d.key]):
+                raise _as_written(path, f"dispersions.{json.dumps(d.key)}", scene, d.key, exc,
+                                  f"a {d.dist} distribution in {d.unit or 'plain numbers'} centred on "
+                                  f"{centres[d.key]!r}")
+
+
+def _as_written(path: Path, where: str, scene: Path, key: str, exc: InputError, found: str) -> InputError:
+    """A scene's refusal of a value a study sets, as the study's error at the key path written there."""
+    return InputError(str(path), where, f"what the scene key {_scene_key(key)} of {scene.name} takes: {exc.expected}", found)
+
+
 def _cell_shape(scene: Path) -> tuple[int, int]:
     cfg = read_scene(scene)
     return len(cfg.cell_names), len(cfg.cell_names[0])
@@ -220,6 +280,7 @@ def read_study(path: str | Path) -> Study:
     if len(points) * samples > MAX_RUNS:
         raise head.error("samples", f"at most {MAX_RUNS:,} runs in all", f"{len(points) * samples:,}")
     head.finish()
+    _check_scene_values(path, grid, dispersions, points, scenes)
     if dispersions:
         points = _sampled(points, dispersions, samples, seed, scenes)
     ids = [p[0] for p in points]

@@ -28,6 +28,7 @@ from alightsize.reports import drop_tables
 
 from alightsize.common import units
 from alightsize.common.atomic import write_atomic
+from alightsize.common.lock import output_folder
 from alightsize.landings.output import body_histories, summary
 from alightsize.reports.rendering import template_env
 from alightsize.common.resources import data_dir
@@ -351,8 +352,11 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--out", required=True, help="output folder")
     p.add_argument("--drops", default=str(DROPS_DIR), help="folder of the drop scenes drop01.toml ... drop11.toml")
     args = p.parse_args(argv)
-    files = write_drop_report(Path(args.out), Path(args.drops))
-    for e in json.loads(files[0].read_text())["drops"]:
+    with output_folder(Path(args.out)) as stage:           # the files appear together, as the CLI's do
+        files = write_drop_report(stage.path, Path(args.drops))
+        doc = json.loads(files[0].read_text())
+        stage.publish()
+    for e in doc["drops"]:
         t = e["totals"]["simulated"]
         print(f"drop {e['drop']:2d}: {e['outcome']:<12} cell energy {_ftlb(t['energy_J']):>6} ft-lb, error "
               f"{_pct(t['energy_error_rel']):>5} %, total stroke vs analytical "

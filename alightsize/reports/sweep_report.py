@@ -234,25 +234,27 @@ def write_workbook(doc: dict, rows: list[dict], path: Path) -> Path:
     return path
 
 
-def write_results(study: Study, out: Path) -> list[Path]:
-    """outcomes.json, outcomes.xlsx, report.html and plots for the study's runs stored in out/runs.sqlite."""
+def write_results(study: Study, out: Path, reports: Path | None = None) -> list[Path]:
+    """outcomes.json, outcomes.xlsx, report.html and plots (in `reports`, default `out`) for the study's runs
+    stored in out/runs.sqlite."""
     store = RunStore(out / "runs.sqlite")
     try:
         rows = store.rows([r.run_id for r in study.runs])
     finally:
         store.close()
+    folder = reports or out
     doc = results(study, rows)
-    files = [write_atomic(out / "outcomes.json", json.dumps(doc, indent=1, default=str) + "\n"),
-             write_workbook(doc, rows, out / "outcomes.xlsx")]
+    files = [write_atomic(folder / "outcomes.json", json.dumps(doc, indent=1, default=str) + "\n"),
+             write_workbook(doc, rows, folder / "outcomes.xlsx")]
     done = [r for r in rows if r["status"] == "done"]
     plots = []
     axes = plot_axes(study, done) if done else None
     if axes:
-        plots.append(boundary_plot(done, axes, out / "boundary.png").name)
+        plots.append(boundary_plot(done, axes, folder / "boundary.png").name)
     if len(done) >= 20:
-        plots.append(distribution_plot(done, out / "distributions.png").name)
+        plots.append(distribution_plot(done, folder / "distributions.png").name)
     html = template_env(True).get_template("sweep_report.html.j2").render(doc=doc, plots=plots, version=__version__, symbols=SYMBOL,
                                                                   legend=matrix_legend(doc),
                                                                   source=study.path.name)
-    files.append(write_atomic(out / "report.html", html))
-    return files + [out / p for p in plots]
+    files.append(write_atomic(folder / "report.html", html))
+    return files + [folder / p for p in plots]
