@@ -7,7 +7,7 @@ Two layouts (body principal axes, m; 3 along the capsule axis, up):
   s of its rest length up from the footpad; the primary below the knee carries bending.
 
 The primary holds a compression-only crushable cartridge; each secondary one cartridge crushed in compression
-and one in tension (NASA TN D-6850, Rogers 1972: honeycomb cartridges in the primary and secondary struts). In
+and one in tension (the LM's struts held aluminium honeycomb cartridges: NASA TN D-6850, Rogers 1972). In
 the cantilever the primary strokes below the knee (the LM's inner cylinder slides into the outer one, which the
 secondaries brace: our reading of Rogers 1972), so the hardpoint-knee distance a = (1 - s) L0 is fixed and the
 overhang Lp - a shrinks as the primary strokes.
