@@ -1,0 +1,322 @@
+"""Tripod legs: a footpad held by a primary strut and two secondary struts (geometry, kinematics, statics).
+
+Two layouts (body principal axes, m; 3 along the capsule axis, up):
+
+- **inverted tripod** (`secondary_attach` = 0, Viking): the three struts meet at the footpad;
+- **cantilever** (0 < `secondary_attach` < 1, Apollo LM): the secondaries brace the primary at a knee a fraction
+  s of its rest length up from the footpad; the primary below the knee carries bending.
+
+The primary holds a compression-only crushable cartridge; each secondary one cartridge crushed in compression
+and one in tension (the LM's struts held aluminium honeycomb cartridges: NASA TN D-6850, Rogers 1972). In
+the cantilever the primary strokes below the knee (the LM's inner cylinder slides into the outer one, which the
+secondaries brace: our reading of Rogers 1972), so the hardpoint-knee distance a = (1 - s) L0 is fixed and the
+overhang Lp - a shrinks as the primary strokes.
+
+Assumptions (valid for quasi-static loads on a massless leg): ball joints at the hardpoints, the knee and the
+footpad (no moment enters or leaves there); the secondaries are two-force members (Hibbeler, Statics, sec. 6.5,
+space trusses); the primary is a rigid beam pinned at its hardpoint (free to spin about its own axis, so it
+carries no torsion); small deflections of the members themselves (equilibrium on the current geometry, the
+struts' lengths changing only through their cartridges). Strut forces are tension positive, lengths L =
+(primary Lp, secondary l1, l2), the footpad P. Virtual work closes: F . dP = sum T_i dL_i (Hibbeler, Statics,
+sec. 11.2), so the strut forces are T = G^-T F with G = dL/dP, and the footpad force of given strut forces is
+G^T T. Pure numpy; the simulator does not use this module yet (docs/notes/tripod-design.md).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cached_property
+
+import numpy as np
+
+from .crush_cell import CellModel
+
+MIN_DET = 0.02   # least |u . (e1 x e2)| of the strut directions at the joint (1 when orthogonal, 0 when coplanar)
+
+
+def _unit(v: np.ndarray) -> tuple[np.ndarray, float]:
+    n = float(np.linalg.norm(v))
+    return v / n, n
+
+
+def _point(name: str, value, shape=(3,)) -> np.ndarray:
+    a = np.array(value, float)
+    if a.shape != shape or not np.all(np.isfinite(a)):
+        raise ValueError(f"{name}: expected finite coordinates of shape {shape} (m), got {value!r}")
+    return a
+
+
+@dataclass(frozen=True)
+class TripodLeg:
+    """A primary hardpoint, two secondary hardpoints (rows of a (2, 3) array) and the footpad at rest (m,
+    principal axes); `secondary_attach` s (0: inverted tripod, 0 < s < 1: cantilever knee at s of the primary's
+    rest length up from the footpad); the primary cartridge (compression only), each secondary's compression
+    and tension cartridges; the footpad's diameter (m) and mass (kg, 0 for the massless limit)."""
+
+    primary_hardpoint: np.ndarray
+    secondary_hardpoints: np.ndarray
+    footpad: np.ndarray
+    secondary_attach: float
+    primary: CellModel
+    secondary_compression: tuple[CellModel, CellModel]
+    secondary_tension: tuple[CellModel, CellModel]
+    footpad_diameter: float
+    footpad_mass: float = 0.0
+
+    def __post_init__(self):
+        set_ = object.__setattr__
+        set_(self, "primary_hardpoint", _point("primary_hardpoint", self.primary_hardpoint))
+        set_(self, "secondary_hardpoints", _point("secondary_hardpoints", self.secondary_hardpoints, (2, 3)))
+        set_(self, "footpad", _point("footpad", self.footpad))
+        s = self.secondary_attach
+        if not 0.0 <= s < 1.0:
+            raise ValueError(f"secondary_attach: expected 0 (inverted tripod) or a fraction in (0, 1) of the "
+                             f"primary up from the footpad (cantilever knee), got {s!r}")
+        if len(self.secondary_compression) != 2 or len(self.secondary_tension) != 2:
+            raise ValueError("secondary_compression, secondary_tension: expected one cell per secondary strut (two)")
+        if not self.footpad_diameter > 0:
+            raise ValueError(f"footpad_diameter: expected > 0 m, got {self.footpad_diameter!r}")
+        if not self.footpad_mass >= 0:
+            raise ValueError(f"footpad_mass: expected >= 0 kg (0: massless), got {self.footpad_mass!r}")
+        if not self.rest_primary_length > 0:
+            raise ValueError("footpad: coincides with primary_hardpoint (a primary strut of zero length)")
+        joint = "knee" if self.is_cantilever else "footpad"
+        for i in range(2):
+            if not self.rest_lengths[i + 1] > 0:
+                raise ValueError(f"secondary_hardpoints[{i}]: coincides with the {joint} (a strut of zero length)")
+        det = _triple(self, self.footpad)
+        if abs(det) < MIN_DET:
+            raise ValueError(f"secondary_hardpoints: the struts meet the {joint} nearly coplanar (|u . (e1 x e2)| = "
+                             f"{abs(det):.3g} < {MIN_DET}): the leg would have no stiffness across their plane")
+        if self.is_cantilever and self.primary.curve.deflection[-1] >= s * self.rest_primary_length:
+            raise ValueError(f"primary: its curve runs to {self.primary.curve.deflection[-1]:.4g} m of stroke, at or "
+                             f"past the knee ({s * self.rest_primary_length:.4g} m up from the footpad)")
+
+    @property
+    def is_cantilever(self) -> bool:
+        return self.secondary_attach > 0.0
+
+    @property
+    def hardpoints(self) -> np.ndarray:
+        """(3, 3): primary, secondary 1, secondary 2 hardpoints."""
+        return np.vstack((self.primary_hardpoint, self.secondary_hardpoints))
+
+    @cached_property
+    def rest_primary_length(self) -> float:
+        return float(np.linalg.norm(self.footpad - self.primary_hardpoint))
+
+    @property
+    def knee_offset(self) -> float:
+        """Hardpoint-to-knee distance a = (1 - s) L0 (m); the whole primary for an inverted tripod."""
+        return (1.0 - self.secondary_attach) * self.rest_primary_length
+
+    @cached_property
+    def rest_lengths(self) -> np.ndarray:
+        """Strut lengths at rest (Lp, l1, l2), m."""
+        return strut_lengths(self, self.footpad)
+
+    @cached_property
+    def branch(self) -> float:
+        """+1 or -1: the side of the hardpoints' plane (normal (A1 - Ap) x (A2 - Ap)) the joint lies on at rest;
+        the kinematics keep it (the branch below the body)."""
+        a, b, c = self.hardpoints
+        return float(np.sign(np.cross(b - a, c - a) @ (junction(self, self.footpad) - a)))
+
+    @property
+    def cells(self) -> tuple[CellModel, ...]:
+        """The five cells in `cell_deflections` order: primary, then each secondary's compression and tension."""
+        c, t = self.secondary_compression, self.secondary_tension
+        return (self.primary, c[0], t[0], c[1], t[1])
+
+
+def _triple(leg: TripodLeg, P: np.ndarray) -> float:
+    """u . (e1 x e2): the primary's and the secondaries' unit vectors at the joint (0 when coplanar)."""
+    u = _unit(P - leg.primary_hardpoint)[0]
+    j = junction(leg, P)
+    e1, e2 = (_unit(j - h)[0] for h in leg.secondary_hardpoints)
+    return float(u @ np.cross(e1, e2))
+
+
+def junction(leg: TripodLeg, P) -> np.ndarray:
+    """Where the secondaries meet the primary for the footpad at P: the footpad itself (inverted tripod) or the
+    knee, a = (1 - s) L0 from the hardpoint along the primary (cantilever)."""
+    P = np.asarray(P, float)
+    if not leg.is_cantilever:
+        return P
+    return leg.primary_hardpoint + leg.knee_offset * _unit(P - leg.primary_hardpoint)[0]
+
+
+def strut_lengths(leg: TripodLeg, P) -> np.ndarray:
+    """Inverse kinematics: (Lp, l1, l2) for the footpad at P (m)."""
+    P = np.asarray(P, float)
+    j = junction(leg, P)
+    return np.array([np.linalg.norm(P - leg.primary_hardpoint), *(np.linalg.norm(j - h)
+                                                                   for h in leg.secondary_hardpoints)])
+
+
+def _trilaterate(c: np.ndarray, r: np.ndarray, branch: float) -> np.ndarray:
+    """The point at distances r from the centres c (3, 3) on the `branch` side of their plane: subtracting the
+    sphere equations pairwise gives its coordinates in the centres' plane, the first equation its height."""
+    ex, d = _unit(c[1] - c[0])
+    w = c[2] - c[0]
+    i = ex @ w
+    ey, j = _unit(w - i * ex)
+    ez = np.cross(ex, ey)
+    x = (r[0] ** 2 - r[1] ** 2 + d * d) / (2.0 * d)
+    y = (r[0] ** 2 - r[2] ** 2 + i * i + j * j - 2.0 * i * x) / (2.0 * j)
+    z2 = r[0] ** 2 - x * x - y * y
+    if z2 < 0.0:
+        raise ValueError(f"strut lengths {tuple(r)} m do not meet: no position of the joint")
+    return c[0] + x * ex + y * ey + branch * np.sqrt(z2) * ez
+
+
+def footpad_position(leg: TripodLeg, lengths) -> np.ndarray:
+    """Forward kinematics: the footpad for strut lengths (Lp, l1, l2). The joint (footpad or knee) is the
+    intersection of the spheres about the hardpoints, radii (Lp or a, l1, l2), on the rest branch; the
+    cantilever's footpad is then Lp along the primary through the knee."""
+    L = np.asarray(lengths, float)
+    a = leg.knee_offset
+    r0 = a if leg.is_cantilever else L[0]
+    j = _trilaterate(leg.hardpoints, np.array([r0, L[1], L[2]]), leg.branch)
+    if not leg.is_cantilever:
+        return j
+    if not L[0] > a:
+        raise ValueError(f"primary length {L[0]:.6g} m: at or above the knee ({a:.6g} m from the hardpoint)")
+    return leg.primary_hardpoint + (L[0] / a) * (j - leg.primary_hardpoint)
+
+
+def length_jacobian(leg: TripodLeg, P) -> np.ndarray:
+    """G = dL/dP (3 x 3) at the footpad P. Inverted tripod: rows are the unit strut vectors u, e1, e2
+    (hardpoint to footpad). Cantilever: dLp/dP = u, dl_i/dP = (a/Lp) (e_i - (e_i . u) u), since the knee moves
+    by (a/Lp) (I - u u^T) dP."""
+    P = np.asarray(P, float)
+    u, Lp = _unit(P - leg.primary_hardpoint)
+    j = junction(leg, P)
+    e = [_unit(j - h)[0] for h in leg.secondary_hardpoints]
+    if not leg.is_cantilever:
+        return np.array([u, *e])
+    k = leg.knee_offset / Lp
+    return np.array([u, *(k * (ei - (ei @ u) * u) for ei in e)])
+
+
+def footpad_jacobian(leg: TripodLeg, lengths) -> np.ndarray:
+    """d(footpad)/d(Lp, l1, l2) (3 x 3) = G^-1 at the footpad those lengths give."""
+    return np.linalg.inv(length_jacobian(leg, footpad_position(leg, lengths)))
+
+
+@dataclass(frozen=True)
+class StrutForces:
+    """Strut forces (N, tension positive) for a force at the footpad: the primary's cartridge (the primary below
+    the knee), the secondaries, the primary between its hardpoint and the knee (the cartridge's force for an
+    inverted tripod); the bending moment in the primary at the knee (N m, 0 for an inverted tripod); and the
+    force of the leg on the body at each hardpoint (rows: primary, secondary 1, secondary 2; they sum to F)."""
+
+    primary: float
+    secondaries: np.ndarray
+    primary_upper: float
+    knee_moment: float
+    hardpoint_forces: np.ndarray
+
+
+def strut_forces(leg: TripodLeg, F, P=None) -> StrutForces:
+    """Equilibrium of the massless leg under a force F (N, principal axes) on the footpad at P (rest if None).
+
+    Inverted tripod (method of joints at the footpad, Hibbeler, Statics, sec. 6.5): F = Tp u + T1 e1 + T2 e2,
+    a 3 x 3 system in the unit vectors from the hardpoints to the footpad.
+    Cantilever: moments about the primary's hardpoint pin, a u x (T1 e1 + T2 e2) = Lp u x F, whose two
+    components across u give T1 = (Lp/a) u . (F x e2) / D, T2 = (Lp/a) u . (e1 x F) / D, D = u . (e1 x e2)
+    (e_i from the secondary hardpoints to the knee); the cartridge below the knee carries Tp = F . u, the primary
+    above it (F - T1 e1 - T2 e2) . u; the knee moment is |F_perp| (Lp - a) (`bending_moment`)."""
+    P = leg.footpad if P is None else np.asarray(P, float)
+    F = np.asarray(F, float)
+    u, Lp = _unit(P - leg.primary_hardpoint)
+    j = junction(leg, P)
+    e1, e2 = (_unit(j - h)[0] for h in leg.secondary_hardpoints)
+    if not leg.is_cantilever:
+        T = np.linalg.solve(np.column_stack((u, e1, e2)), F)
+        return StrutForces(T[0], T[1:], T[0], 0.0, T[:, None] * np.array([u, e1, e2]))
+    a = leg.knee_offset
+    d = u @ np.cross(e1, e2)
+    t1 = Lp / a * (u @ np.cross(F, e2)) / d
+    t2 = Lp / a * (u @ np.cross(e1, F)) / d
+    on_pin = F - t1 * e1 - t2 * e2
+    perp = np.linalg.norm(F - (F @ u) * u)
+    return StrutForces(F @ u, np.array([t1, t2]), on_pin @ u, perp * (Lp - a), np.array([on_pin, t1 * e1, t2 * e2]))
+
+
+def footpad_force(leg: TripodLeg, T, P=None) -> np.ndarray:
+    """Force on the footpad (N) that the strut forces T = (Tp, T1, T2) (tension positive) hold in equilibrium
+    at P (rest if None): G^T T, the inverse of `strut_forces` (virtual work)."""
+    P = leg.footpad if P is None else P
+    return length_jacobian(leg, P).T @ np.asarray(T, float)
+
+
+def bending_moment(leg: TripodLeg, F, x, P=None):
+    """Bending moment magnitude (N m) in the primary at distances x (m) from its footpad end, for a force F on
+    the footpad at P (rest if None). Inverted tripod: 0 (a two-force member). Cantilever: the overhang below the
+    knee, M = |F_perp| x for x <= b = Lp - a (free body of the tip); above the knee it falls linearly to the
+    pin, M = |F_perp| b (Lp - x) / a, since the secondaries' resultant across u is -(Lp/a) F_perp. Every force
+    across the primary is parallel to F_perp, so it bends in the plane of u and F_perp."""
+    P = leg.footpad if P is None else np.asarray(P, float)
+    F = np.asarray(F, float)
+    x = np.asarray(x, float)
+    u, Lp = _unit(P - leg.primary_hardpoint)
+    if np.any(x < 0) or np.any(x > Lp):
+        raise ValueError(f"x: expected distances from the footpad within the primary's length [0, {Lp:.6g}] m")
+    if not leg.is_cantilever:
+        return np.zeros_like(x)
+    a = leg.knee_offset
+    b = Lp - a
+    perp = np.linalg.norm(F - (F @ u) * u)
+    return np.where(x <= b, perp * x, perp * b * (Lp - x) / a)
+
+
+def cell_deflections(leg: TripodLeg, lengths) -> np.ndarray:
+    """Deflections (m) of the five cells in `TripodLeg.cells` order: the primary's shortening, then for each
+    secondary its shortening (compression cell) and its lengthening (tension cell); a cell pushes only at
+    positive deflection, so Tp = -f0, T1 = f2 - f1, T2 = f4 - f3 from the cell forces f."""
+    d = leg.rest_lengths - np.asarray(lengths, float)
+    return np.array([d[0], d[1], -d[1], d[2], -d[2]])
+
+
+def tripod_from_params(footpad_radius: float, hardpoint_radius: float, hardpoint_height: float, *,
+                       secondary_spread: float, primary: CellModel, secondary_compression: CellModel,
+                       secondary_tension: CellModel, footpad_diameter: float, primary_angle: float | None = None,
+                       footpad_height: float | None = None, secondary_attach: float = 0.0,
+                       secondary_height: float | None = None, azimuth: float = 0.0,
+                       footpad_mass: float = 0.0) -> TripodLeg:
+    """A leg in the half-plane at `azimuth` (rad, from principal axis 1 toward 2): primary hardpoint at
+    `hardpoint_radius` from the capsule axis and `hardpoint_height` along it (m), footpad at `footpad_radius`
+    and either `footpad_height` or the primary's angle from the capsule axis `primary_angle` (rad, outward,
+    in (0, pi/2)); secondary hardpoints on the hardpoint circle at azimuth +-`secondary_spread` (rad, in (0, pi))
+    about the leg's, at `secondary_height` (the primary hardpoint's if None); both secondaries get the same
+    cells."""
+    if not footpad_radius > 0:
+        raise ValueError(f"footpad_radius: expected > 0 m, got {footpad_radius!r}")
+    if not hardpoint_radius > 0:
+        raise ValueError(f"hardpoint_radius: expected > 0 m (hardpoints on the axis are collinear), got "
+                         f"{hardpoint_radius!r}")
+    if (primary_angle is None) == (footpad_height is None):
+        raise ValueError("primary_angle, footpad_height: expected exactly one of them")
+    if primary_angle is not None:
+        if not 0 < primary_angle < np.pi / 2:
+            raise ValueError(f"primary_angle: expected in (0, pi/2) rad from the capsule axis, got {primary_angle!r}")
+        if not footpad_radius > hardpoint_radius:
+            raise ValueError("primary_angle: an outward primary needs footpad_radius > hardpoint_radius (give "
+                             "footpad_height for a vertical or inward primary)")
+        footpad_height = hardpoint_height - (footpad_radius - hardpoint_radius) / np.tan(primary_angle)
+    if not footpad_height < hardpoint_height:
+        raise ValueError(f"footpad_height: expected below hardpoint_height ({hardpoint_height!r} m), got "
+                         f"{footpad_height!r}")
+    if not 0 < secondary_spread < np.pi:
+        raise ValueError(f"secondary_spread: expected in (0, pi) rad, got {secondary_spread!r}")
+    zs = hardpoint_height if secondary_height is None else secondary_height
+
+    def on_circle(radius, angle, height):
+        return np.array([radius * np.cos(angle), radius * np.sin(angle), height])
+
+    return TripodLeg(on_circle(hardpoint_radius, azimuth, hardpoint_height),
+                     np.array([on_circle(hardpoint_radius, azimuth + sign * secondary_spread, zs) for sign in (1, -1)]),
+                     on_circle(footpad_radius, azimuth, footpad_height), secondary_attach, primary,
+                     (secondary_compression, secondary_compression), (secondary_tension, secondary_tension),
+                     footpad_diameter, footpad_mass)
