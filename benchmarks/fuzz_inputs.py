@@ -558,7 +558,8 @@ def main() -> None:
     ap.add_argument("--kind", action="append", choices=sorted(KINDS), help="a file kind (repeatable; default all)")
     ap.add_argument("--landings", action="store_true", help="run the command line end to end on a mutated landing "
                     "scene or study (kinds simulate and sweep) instead of the readers")
-    ap.add_argument("--timeout", type=float, help="seconds after which a case counts as a hang (5; 120 with --landings)")
+    ap.add_argument("--timeout", type=float,
+                    help="seconds after which a case counts as a hang (5; 120 with --landings)")
     ap.add_argument("--json", type=Path)
     ap.add_argument("--show", type=int, metavar="CASE", help="print case CASE's mutated file and stop")
     args = ap.parse_args()

@@ -206,7 +206,8 @@ def _check_scene_values(path: Path, grid: Node | None, dispersions: list[Dispers
 
 def _as_written(path: Path, where: str, scene: Path, key: str, exc: InputError, found: str) -> InputError:
     """A scene's refusal of a value a study sets, as the study's error at the key path written there."""
-    return InputError(str(path), where, f"what the scene key {_scene_key(key)} of {scene.name} takes: {exc.expected}", found)
+    return InputError(str(path), where, f"what the scene key {_scene_key(key)} of {scene.name} takes: {exc.expected}",
+                      found)
 
 
 def _cell_shape(scene: Path) -> tuple[int, int]:
