@@ -1,7 +1,8 @@
 """Printed results of AFFDL-TR-66-33 App. IV (stress design factors) and App. V (weights, Tables 23-26).
 
 Transcribed from the published report (cited by section, table, equation and appendix), as printed,
-misprints included. Units as printed: lb, lb/in^2 (psi), in. Configuration ids are those of the example configs: "012" telescoping, "3457", "68" and "9" articulated.
+misprints included. Units as printed: lb, lb/in^2 (psi), in. Configuration ids are those of the example configs:
+"012" telescoping, "3457", "68" and "9" articulated.
 """
 
 # ------------------------------------------------------------------ App. IV design factors

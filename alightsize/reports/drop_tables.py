@@ -38,8 +38,8 @@ TEST_MODEL = {
     "legs_weight_lb": 31.2,                       # App. VI, Test Model "Leg Weight 31.2 lb" (the four legs together)
     "pitch_yaw_inertia_slug_ft2": 3.326,          # App. VI, Test Model "Pitch and Yaw Inertia"
     "roll_inertia_slug_ft2": 2.77,                # App. VI, Test Model "Roll Inertia"
-    "cg_above_lower_parallelogram_pivots_ft": 0.33,   # App. VI, Test Model "0.33 feet above lower parallelogram pivots and
-                                                  # on the vertical axis"
+    "cg_above_lower_parallelogram_pivots_ft": 0.33,   # App. VI, Test Model "0.33 feet above lower parallelogram
+                                                      # pivots and on the vertical axis"
     "legs": 4,                                    # App. VI (four legs; numbering of Fig. 14, Sec. VI.B, Drop 2)
     "length_scale_to_3000_lb": 4.0,               # Table 27; App. V, articulated leg, test model (configs 3-5, 7)
     "length_scale_to_300_lb": 1.825,              # Table 27; App. V, articulated leg, test model (config 9)
