@@ -162,7 +162,7 @@ def lift_shape(geo, cells, i, mem, alpha, beta, psi, main, r, R):
 def ring_clearance(geo, i, psi, r, R):
     """Height above the terrain of the lowest point of the fulcrum ring (radius AS about the peg-leg axis,
     in the S1-S2 plane at S3 = AU sin psi - AE): below zero the intermediate member strikes the terrain
-    (FORCE's test at line 8337 checks one point of this circle)."""
+    (FORCE's test at App. VII checks one point of this circle)."""
     g = geometry(geo[8], i)
     c = _to_terrain(geo, i, g.AU * np.cos(psi) + g.AO, 0.0, g.AU * np.sin(psi) - g.AE, r, R)
     m0, m1, m2 = mtv(R, 0.0, 0.0, 1.0)

@@ -1,7 +1,7 @@
 """Printed member-load envelopes of the articulated leg, AFFDL-TR-66-33 App. III, Tables 14-22, and the
 cell force-deflection curves of configurations 3-9 (Sec. IV).
 
-Transcribed from /work/shared/reference/000_9b9e1976ecb8d0f1.txt ("l." = line of that file), values as
+Transcribed from the published report (cited by section, table, equation and appendix), values as
 printed (lbf, degrees). Each row is (member, load lbf, alpha deg, beta deg, psi deg); tension positive.
 Member names are those of `alightsize_sim.articulated_statics.MEMBERS`. The tables label the pairs PL1/(PL3),
 PL2/(PL6), PU1/(PU2) and the OCR or the typesetter garbles several labels; they are mapped by row order:
@@ -40,7 +40,7 @@ Suspected misprints (evidence from the other tables; the rows above keep the pri
 
 # ------------------------------------------------------------------ Tables 14-20, one configuration each
 TABLES = {
-    "3": (                                   # Table 14, l. 3657-3677 (initial psi -15)
+    "3": (                                   # Table 14 (initial psi -15)
         ("PL1", +15_790, 2.0, -40.0, +30.0),
         ("PL1", -18_462, 2.0, +130.0, -5.0),
         ("PL2", +15_285, 2.0, -60.0, +30.0),
@@ -59,7 +59,7 @@ TABLES = {
         ("R11", +48_759, 2.0, 0.0, +30.0),
         ("R123", +50_455, 2.0, 0.0, +30.0),
     ),
-    "4": (                                   # Table 15, l. 3681-3701
+    "4": (                                   # Table 15
         ("PL1", +15_790, 2.0, -40.0, +30.0),
         ("PL1", -19_291, 2.0, +130.0, -13.0),
         ("PL2", +15_285, 2.0, -60.0, +30.0),
@@ -78,7 +78,7 @@ TABLES = {
         ("R11", +48_759, 2.0, 0.0, +30.0),
         ("R123", +50_455, 2.0, 0.0, +30.0),
     ),
-    "5": (                                   # Table 16, l. 3703-3723 (labels misprinted, see docstring)
+    "5": (                                   # Table 16 (labels misprinted, see docstring)
         ("PL1", +16_022, 1.0, -40.0, +30.0),
         ("PL1", -19_459, 1.0, +130.0, -13.0),
         ("PL2", +15_455, 1.0, -60.0, +30.0),
@@ -97,7 +97,7 @@ TABLES = {
         ("R11", +48_984, 1.0, 0.0, +30.0),
         ("R123", +50_762, 1.0, 0.0, +30.0),
     ),
-    "6": (                                   # Table 17, l. 3727-3747
+    "6": (                                   # Table 17
         ("PL1", +18_338, 2.0, -40.0, +30.0),
         ("PL1", -24_163, 2.0, +120.0, +8.0),
         ("PL2", +18_315, 2.0, -60.0, +30.0),
@@ -116,7 +116,7 @@ TABLES = {
         ("R11", +61_909, 2.0, 0.0, +30.0),
         ("R123", +63_977, 2.0, 0.0, +30.0),
     ),
-    "7": (                                   # Table 18, l. 3749-3769 (initial psi -20)
+    "7": (                                   # Table 18 (initial psi -20)
         ("PL1", +15_790, 2.0, -40.0, +30.0),
         ("PL1", -19_532, 2.0, +130.0, -15.0),
         ("PL2", +15_285, 2.0, -60.0, +30.0),
@@ -135,7 +135,7 @@ TABLES = {
         ("R11", +48_759, 2.0, 0.0, +30.0),
         ("R123", +50_455, 2.0, 0.0, +30.0),
     ),
-    "8": (                                   # Table 19, l. 3773-3793 (initial psi -10)
+    "8": (                                   # Table 19 (initial psi -10)
         ("PL1", +18_338, 2.0, -40.0, +30.0),
         ("PL1", -24_163, 2.0, +120.0, +8.0),
         ("PL2", +18_315, 2.0, -60.0, +30.0),
@@ -154,7 +154,7 @@ TABLES = {
         ("R11", +61_909, 2.0, 0.0, +30.0),
         ("R123", +63_977, 2.0, 0.0, +30.0),
     ),
-    "9": (                                   # Table 20, l. 3795-3808 (two rows per printed line)
+    "9": (                                   # Table 20 (two rows per printed line)
         ("PL1", +3_100, 1.0, -40.0, +30.0),
         ("PL1", -3_715, 1.0, +130.0, -13.0),
         ("PL2", +2_983, 1.0, -60.0, +30.0),
@@ -172,7 +172,7 @@ TABLES = {
         ("R123", +9_779, 1.0, 0.0, +30.0),
     ),
     # ---------------------------------------------------------- Tables 21-22, combined envelopes
-    "3457": (                                # Table 21, l. 3812-3831
+    "3457": (                                # Table 21
         ("PL1", +16_022, 2.0, -40.0, +30.0),
         ("PL1", -19_532, 2.0, +130.0, -15.0),
         ("PL2", +15_455, 1.0, -60.0, +30.0),
@@ -189,7 +189,7 @@ TABLES = {
         ("R11", +48_984, 1.0, 0.0, +30.0),
         ("R123", +63_977, 2.0, 0.0, +30.0),      # config 6's value (docstring)
     ),
-    "68": (                                  # Table 22, l. 3833-3852
+    "68": (                                  # Table 22
         ("PL1", +18_338, 2.0, -40.0, +30.0),
         ("PL1", -24_163, 2.0, +120.0, +8.0),
         ("PL2", +18_315, 2.0, -60.0, +30.0),
@@ -210,7 +210,7 @@ TABLES = {
 
 TABLE_NUMBER = {"3": 14, "4": 15, "5": 16, "6": 17, "7": 18, "8": 19, "9": 20, "3457": 21, "68": 22}
 
-# Combined tables: the configurations they envelope (l. 3650-3653).
+# Combined tables: the configurations they envelope (eqs. 105-106).
 COMBINED = {"3457": ("3", "4", "5", "7"), "68": ("6", "8")}
 
 # (configuration, member) whose printed load is a magnitude (single positive RA / RB row).
@@ -237,25 +237,26 @@ SUSPECTED_MISPRINTS = {
         "T22 prints config 8's -10,601; config 6's -10,895 is larger"),
 }
 
-# ------------------------------------------------------------------ cell force-deflection curves, l. 924-1073
+# ------------------------------------------------------------------ cell force-deflection curves, Sec. IV.A
 # configuration -> (upper (deflection ft, force lbf) points, lower points, initial psi deg).
 # Upper = parallelogram cell (psi), lower = peg-leg cell (alpha); loading branch as printed.
 CELL_CURVES = {
-    "3": (((0.00, 0), (0.16, 36_000), (0.97, 36_000), (1.00, 72_000)),            # l. 924-933
+    "3": (((0.00, 0), (0.16, 36_000), (0.97, 36_000), (1.00, 72_000)),            # Sec. IV.A, configuration 3
           ((0.00, 0), (0.02, 30_000), (0.40, 30_000), (0.50, 60_000)), -15.0),
-    "4": (((0.00, 0), (0.04, 36_000), (0.97, 36_000), (1.00, 72_000)),            # l. 944-952
+    "4": (((0.00, 0), (0.04, 36_000), (0.97, 36_000), (1.00, 72_000)),            # Sec. IV.A, configuration 4
           ((0.00, 0), (0.02, 30_000), (0.40, 30_000), (0.50, 60_000)), -15.0),
-    "5": (((0.00, 0), (0.04, 36_000), (0.97, 36_000), (1.00, 72_000)),            # l. 953-961
+    "5": (((0.00, 0), (0.04, 36_000), (0.97, 36_000), (1.00, 72_000)),            # Sec. IV.A, configuration 5
           ((0.000, 0), (0.005, 30_000), (0.400, 30_000), (0.500, 60_000)), -15.0),
-    "6": (((0.00, 0), (0.16, 36_000), (0.47, 36_000), (0.51, 72_000), (0.97, 72_000), (1.00, 144_000)),  # l. 1034-1043
+    "6": (((0.00, 0), (0.16, 36_000), (0.47, 36_000), (0.51, 72_000), (0.97, 72_000), (1.00, 144_000)),  # Sec. IV.A
           ((0.00, 0), (0.02, 30_000), (0.40, 30_000), (0.50, 60_000)), -15.0),
-    "7": (((0.00, 0), (0.04, 36_000), (1.10, 36_000), (1.13, 72_000)),            # l. 1045-1053
+    "7": (((0.00, 0), (0.04, 36_000), (1.10, 36_000), (1.13, 72_000)),            # Sec. IV.A, configuration 7
           ((0.00, 0), (0.02, 30_000), (0.40, 30_000), (0.50, 60_000)), -20.0),
-    "8": (((0.00, 0), (0.04, 36_000), (0.35, 36_000), (0.39, 72_000), (0.85, 72_000), (0.88, 144_000)),  # l. 1054-1063
+    "8": (((0.00, 0), (0.04, 36_000), (0.35, 36_000), (0.39, 72_000), (0.85, 72_000), (0.88, 144_000)),  # Sec. IV.A
           ((0.00, 0), (0.02, 30_000), (0.40, 30_000), (0.50, 60_000)), -10.0),
-    "9": (((0.000, 0), (0.018, 6_688), (0.443, 6_688), (0.456, 13_376)),          # l. 1065-1073 (300 lb capsule)
+    "9": (((0.000, 0), (0.018, 6_688), (0.443, 6_688), (0.456, 13_376)),          # Sec. IV.A, configuration 9 (300 lb
+                                                                                  # capsule)
           ((0.00000, 0), (0.00228, 5_852), (0.18250, 5_852), (0.22800, 11_700)), -15.0),
 }
 
-# Configuration 9 is the full-scale leg scaled in length by 1.825 / 4 (Sec. III, l. 740; App. VI Table 27).
+# Configuration 9 is the full-scale leg scaled in length by 1.825 / 4 (Sec. III, Sec. III.B.2; App. VI Table 27).
 CONFIG_9_LENGTH_SCALE = 1.825 / 4

@@ -32,7 +32,7 @@ def _entry(doc: dict, n: int) -> dict:
 
 
 def test_printed_totals_of_table_10_are_read_as_printed(doc):
-    """Table 10 (drop 6), l. 2891-2892 and 2902-2903: experimental 1,712 ft-lb / -27.0 %, analytical 2,416 ft-lb /
+    """Table 10 (drop 6): experimental 1,712 ft-lb / -27.0 %, analytical 2,416 ft-lb /
     +3.0 %; the analytical total is the sum of its eight cells (4 x 578 + 4 x 26)."""
     t = _entry(doc, 6)["totals"]
     assert t["analytical"]["printed_energy_J"] == pytest.approx(2416 * J_PER_FT_LB, rel=1e-12)
@@ -63,7 +63,7 @@ def test_energy_error_is_the_cell_energy_against_the_drop_energy(doc, n):
 
 
 def test_drop_1_cell_row_against_table_6(doc):
-    """Leg 1 upper cell of drop 1: the permanent set dmax - F/k against the analytical 0.1356 ft (Table 6, l. 2776)."""
+    """Leg 1 upper cell of drop 1: the permanent set dmax - F/k against the analytical 0.1356 ft (Table 6)."""
     _, cfg, res = run_drop(1)
     dmax, fmax = res.memory[0, 0]
     stroke = dmax - fmax / cfg.scene.legs[0].cells[0].k

@@ -37,9 +37,9 @@ def test_cell_energy_matches_the_drop_energy(n):
 
 @pytest.mark.parametrize("n", sorted(STROKES_ENERGIES))
 def test_total_stroke_against_the_analytical_tables(n):
-    """Sum of the eight cells' permanent strokes (the report's analytical strokes are permanent positions, line
-    2744) within 10 % of the analytical columns of Tables 6-13 (the issue's target). Measured: -3.4 % to +2.8 %,
-    mean |difference| 2.1 %."""
+    """Sum of the eight cells' permanent strokes (the report's analytical strokes are permanent positions, Sec. VI.D)
+    within 10 % of the analytical columns of Tables 6-13 (the issue's target). Measured: -3.4 % to +2.8 %, mean
+    |difference| 2.1 %."""
     drop = run_drop(n)
     rows = compare(drop)
     simulated = sum(r["simulated_stroke_m"] for r in rows)
@@ -50,7 +50,7 @@ def test_total_stroke_against_the_analytical_tables(n):
 @pytest.mark.parametrize("n", sorted(STROKES_ENERGIES))
 def test_cells_turn_the_analytical_strokes_into_the_analytical_energies(n):
     """The drop's upper cells, crushed to each analytical stroke of Tables 6-13 plus their spring-back and
-    unloaded, absorb the printed analytical energy (the report's loading/unloading slope correction, line 2746):
+    unloaded, absorb the printed analytical energy (the report's loading/unloading slope correction, Sec. VI.D):
     within 3 % on every stroke of 0.05 ft or more (measured -1.8 % to +2.4 %, mean |error| 1.0 %), within 12 % on
     the shorter ones over 0.03 ft. E = F (s - d): the scenes take one spring-back d for all drops of a cell set
     (0.0187 ft), the report's fitted d spreads 0.0170-0.0210 ft, and that spread is 11 % of s - d = 0.018 ft for
@@ -74,7 +74,7 @@ def test_drop_scenes_take_the_forces_of_the_reports_simulation(n):
     Tables 6-13 (Sec. VI.A: one measured curve per cell type and drop): to the 1 lb the scene files round to.
     The recovery itself: the printed analytical energies follow the fitted E = F (s - d) within 3 ft-lb on every
     fitted cell (their 1 ft-lb rounding and the 4-digit strokes), and on drops 1 and 6 F lies within every
-    cell's experimental rounding bound (energy +-0.5 ft-lb over the stroke, l. 2744)."""
+    cell's experimental rounding bound (energy +-0.5 ft-lb over the stroke, Sec. VI.D)."""
     cells = run_drop(n).cfg.scene.legs[0]
     for cell, model in (("upper", cells.upper), ("lower", cells.lower)):
         force_lb, how = simulation_cell_force(n, cell)
@@ -91,6 +91,6 @@ def test_drop_scenes_take_the_forces_of_the_reports_simulation(n):
 
 
 def test_drop_5_ends_on_the_capsule_bottom_as_the_report_did():
-    """Line 2742: drop 5's simulation stopped when the capsule bottom interfered with the ground."""
+    """Sec. VI.D: drop 5's simulation stopped when the capsule bottom interfered with the ground."""
     _, cfg, res = run_drop(5)
     assert outcome(cfg, res)[0] == "body_contact"

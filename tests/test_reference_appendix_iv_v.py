@@ -70,14 +70,16 @@ def eccentric_and_distributed_plate(w, w_dist, m, t, a, p, r0, a_t=None):
 
 
 def _upper_cap_lugs_combined():
-    # App. IV l. 4104-4126: sigma = M c / I + P / A, M = 1075 (0.5), I = 0.4 (0.5)^3 / 12, c = 0.25, A = 0.5 (0.4)
+    # App. IV telescoping leg, Upper Cap Lugs: sigma = M c / I + P / A, M = 1075 (0.5), I = 0.4 (0.5)^3 / 12, c = 0.25,
+    # A = 0.5 (0.4)
     sigma_b = 1075 * 0.5 * 0.25 / (0.4 * 0.5**3 / 12)     # 32,250 psi (printed 30,000)
     sigma_c = 3750 / (0.5 * 0.4)                         # 18,750 psi (printed 18,800)
     return 69_000 / (sigma_b + sigma_c)                  # 1.353
 
 
 def _post_3457_combined():
-    # App. IV l. 4276-4298: d = 12 - 0.083 = 11.917, A = pi d t, I = pi r^3 t (r = d/2), c = 6.0, M = 49,000 (7.2)
+    # App. IV configs 3-5, 7, Parallelogram Post: d = 12 - 0.083 = 11.917, A = pi d t, I = pi r^3 t (r = d/2), c = 6.0,
+    # M = 49,000 (7.2)
     area = pi * 11.917 * 0.083                           # 3.107 in^2 (printed 3.11)
     inertia = pi * 5.9585**3 * 0.083                     # 55.16 in^4 (printed 55.0)
     sigma = 49_000 / area + 49_000 * 7.2 * 6.0 / inertia  # 15,769 + 38,374 = 54,143 psi (printed 54,400)
@@ -85,7 +87,7 @@ def _post_3457_combined():
 
 
 def _strut_9_compression():
-    # App. IV l. 4626-4638: A = pi (0.785 - 0.070)(0.070), sigma = 9779 / A
+    # App. IV config 9, Peg Leg Strut: A = pi (0.785 - 0.070)(0.070), sigma = 9779 / A
     return 74_000 / (9779 / (pi * 0.715 * 0.070))        # 62,193 psi -> 1.190
 
 

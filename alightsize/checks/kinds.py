@@ -496,7 +496,7 @@ def _plate_range(p, s: Section) -> tuple[str, str, str] | None:
 
 
 _FIXED = "3 {W} ({m}+1) / (2π {m} {t}²) [ln({a}/{r0}) + {r0}²/(4 {a}²)]"
-_FIXED_EDGE = "-3 {W} / (2π {t}²) [1 - {r0}²/(2 {a}²)], σt = σr/m"
+_FIXED_EDGE = "-3 {W} / (2π {t}²) [1 - {r0}²/(2 {a}²)], σt = σr / {m}"
 _SUPPORTED = "3 {W} / (2π {m} {t}²) [{m} + ({m}+1) ln({a}/{r0}) - ({m}-1) {r0}²/(4 {a}²)]"
 _CENTER = {"fixed": (("centre", plates.fixed_center_load, _FIXED, "edge fixed, at the centre (Roark 1954 p. 196)"),
                      ("edge", plates.fixed_edge_load, _FIXED_EDGE,
@@ -549,19 +549,21 @@ def _plate_moment(p, s, mat) -> Outcome:
     m, r0 = mat.poisson_m, p["r0"]
     moment, mstep = _moment(p)
     steps = [mstep] if mstep else []
-    ins = (("M", moment, "moment"), ("t", t, "length"), ("r0", r0, "length"), ("a", a, "length"))
+    ins = (("M", moment, "moment"), ("t", t, "length"), ("r0", r0, "length"), ("a", a, "length"),
+           ("m", m, "dimensionless"))
     if p["formula"] == "app_iv":
         sm = plates.fixed_center_moment(moment, t, a, r0, m, p["pi_squared"])
         steps.append(Step("Stress due to moment (Roark 1954 p. 197)", "σM",
-                          "3 {M} / (4 π" + ("²" if p["pi_squared"] else "") + " {t}² {r0}) [1 + (m+1)/m "
-                          "ln(2(0.45 {a} - {r0}) / (0.45 k {a}))]", ins, sm[0], "stress"))
+                          "3 {M} / (4 π" + ("²" if p["pi_squared"] else "") + " {t}² {r0}) [1 + ({m}+1)/{m} "
+                          "ln(2(0.45 {a} - {r0}) / (0.45 k {a}))], k = 0.1 {a}² / ({r0} + 0.28 {a})²", ins, sm[0],
+                          "stress"))
     else:
         sm = plates.hub_couple(moment, t, a, r0, m, p["edge"])
         fixed = p["edge"] == "fixed"
         steps.append(Step(f"Stress due to moment at the hub edge, rigid hub, edge {p['edge']} (thin plate)", "σM",
                           "3 {M} F / (π {r0} {t}²), F = " + ("({a}² - {r0}²)/({a}² + {r0}²)" if fixed else
-                          "[(3+ν){a}⁴ - 2(1+ν){a}²{r0}² - (1-ν){r0}⁴] / [(3+ν){a}⁴ + (1-ν){r0}⁴]"),
-                          ins, sm[0], "stress"))
+                          "[(3+{ν}){a}⁴ - 2(1+{ν}){a}²{r0}² - (1-{ν}){r0}⁴] / [(3+{ν}){a}⁴ + (1-{ν}){r0}⁴]"),
+                          ins + (("ν", 1 / m, "dimensionless"),), sm[0], "stress"))
     points, load_steps = _center_points(p, p["edge"], a, t, m)
     steps += load_steps
     where, wr, wt = max(points, key=lambda pt: _equivalent(pt[1], pt[2], p["theory"]))
@@ -608,13 +610,13 @@ def _plate_eccentric(p, s, mat) -> Outcome:
     m = mat.poisson_m
     r0, steps = _load_radius(p, t)
     ins = (("W", p["W"], "force"), ("W'", p["W_total"], "force"), ("t", t, "length"), ("a", a, "length"),
-           ("p", p["p"], "length"), ("r0", r0, "length"))
+           ("p", p["p"], "length"), ("r0", r0, "length"), ("m", m, "dimensionless"))
     if p["formula"] == "app_iv":
         e = plates.app_iv_eccentric_load(p["W"], t, a, p["p"], r0, m)
         er, et = e, e
         steps.append(Step("Stress due to the eccentric load, as a central load on a plate of radius a - p "
                           "(App. IV; Roark 1954 p. 194-195)", "σW",
-                          "3 {W} / (2π m {t}²) [m + (m+1) ln(({a}-{p})/{r0}) - (m-1) {r0}²/(4({a}-{p})²)]",
+                          "3 {W} / (2π {m} {t}²) [{m} + ({m}+1) ln(({a}-{p})/{r0}) - ({m}-1) {r0}²/(4({a}-{p})²)]",
                           ins, e, "stress"))
     else:
         er, et = plates.supported_eccentric_load(p["W"], t, a, p["p"], r0, m)
@@ -625,9 +627,10 @@ def _plate_eccentric(p, s, mat) -> Outcome:
     a_t = p["a_t"] or a
     dr, dt = plates.supported_uniform_load(p["W_total"], t, a, p["p"], m, a_t)
     steps.append(Step("Radial stress due to the distributed load (Roark 1954 p. 194)", "σW',r",
-                      "3 {W'} / (8π m {t}²) (3m+1)(1 - {p}²/{a}²)", ins, dr, "stress"))
+                      "3 {W'} / (8π {m} {t}²) (3 {m}+1)(1 - {p}²/{a}²)", ins, dr, "stress"))
     steps.append(Step("Tangential stress due to the distributed load (Roark 1954 p. 194)", "σW',t",
-                      "3 {W'} / (8π m {t}²) [(3m+1) - (m+3) {p}²/{at}²]", ins + (("at", a_t, "length"),), dt, "stress"))
+                      "3 {W'} / (8π {m} {t}²) [(3 {m}+1) - ({m}+3) {p}²/{at}²]", ins + (("at", a_t, "length"),), dt,
+                      "stress"))
     sr, st = dr - er, dt - et
     steps.append(Step("Radial stress at the load", "σr", "{σW',r} - {σW,r}",
                       (("σW',r", dr, "stress"), ("σW,r", er, "stress")), sr, "stress"))

@@ -42,7 +42,7 @@ from alightsize.common.units import registry
 
 BOTTOMED_KIND = {"axial": "axial", "rot": "rotational_pad", "upper": "psi", "lower": "alpha"}
 # The printed legends have one symbol for both: "+ FLIGHT TIME OUT, CAPSULE 'WALKING'" (Tables 3-4,
-# l. 1132, 1163; Sec. II.B: every run stopped by the time limit was called walking).
+# their legends; Sec. II.B: every run stopped by the time limit was called walking).
 PRINTED_AS = {"time_out": "walking"}
 MAX_RUNS = 1_000_000
 # run ids and scene keys name history files in the output folder: no separators, no leading dot

@@ -478,7 +478,8 @@ def _controls(node: Node | None, mass: float, legs: list[TelescopingLeg | Articu
     if event_tol > d.contact_band / GRAZE_SPEED:
         raise node.error("event_tol", f"a time of at most {d.contact_band / GRAZE_SPEED:g} s (the grazing band "
                          f"{d.contact_band:g} m at {GRAZE_SPEED:g} m/s)", f"{event_tol:g} s")
-    period = float(np.pi * np.sqrt(mass / legs[0].cells[0].k))    # TAU = pi sqrt(M / SLOPE(1)) (FUNEV, line 6692)
+    period = float(np.pi * np.sqrt(mass / legs[0].cells[0].k))    # TAU = pi sqrt(M / SLOPE(1)) (App. VII,
+                                                                  # telescoping subroutine FORCE)
     return Controls(t_final=t_final, rtol=rtol, atol=atol, fixed_step=fixed, max_step=max_step, event_tol=event_tol,
                     tip_angle=tip, taus=taus, period=period, stop_on_bottoming=stop, energy_check_from=energy_t,
                     closed_form_flight=flight)

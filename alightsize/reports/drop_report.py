@@ -37,39 +37,39 @@ from alightsize.landings.shock_spectrum import default_frequencies, srs
 
 SCHEMA = "alightsize.drops/1"
 DROPS_DIR = data_dir("examples") / "affdl-tr-66-33" / "drops"
-DROP_NUMBERS = (1, 2, 3, 4, 5, 6, 8, 9, 10, 11)              # AFFDL-TR-66-33 Table 5 (drop 7 deleted, l. 2279)
+DROP_NUMBERS = (1, 2, 3, 4, 5, 6, 8, 9, 10, 11)              # AFFDL-TR-66-33 Table 5 (drop 7 deleted, Sec. VI.B)
 SOURCES = ("simulated", "analytical", "experimental")
 FT = units.parse("1 ft", "length")                           # m per ft
 FT_LB = units.parse("1 ft*lbf", "energy")                    # J per ft-lbf
 SRS_FREQUENCIES = default_frequencies(1.0, 1000.0)           # Hz, as `alightsize simulate`'s srs_xdd3.png
-# AFFDL-TR-66-33 List of Figures (l. 205-292): drop -> (figure of XDD(1), the six run on to OMD(3); shock spectra)
+# AFFDL-TR-66-33 List of Figures: drop -> (figure of XDD(1), the six run on to OMD(3); shock spectra)
 FIGURES = {1: (33, 39), 2: (40, 46), 3: (47, 53), 4: (54, 60), 5: (61, None), 6: (67, 73), 8: (74, 80),
            9: (81, 87), 10: (88, 94), 11: (95, 101)}
-# AFFDL-TR-66-33 Sec. VI.D, l. 2742: why drops 5 and 11 have no stroke table
+# AFFDL-TR-66-33 Sec. VI.D: why drops 5 and 11 have no stroke table
 NO_TABLE = {
     5: "no table in the report: its simulation stopped when the capsule bottom interfered with the ground, while "
-       "the test model may have stroked significantly after that (Sec. VI.D, l. 2742)",
+       "the test model may have stroked significantly after that (Sec. VI.D)",
     11: "no table in the report: its simulation ended when the model pitched 60 deg beyond the vertical, while the "
-        "test model tumbled over and stroked its absorbers further (Sec. VI.D, l. 2742)",
+        "test model tumbled over and stroked its absorbers further (Sec. VI.D)",
 }
 NOTES = (
     "Simulated stroke: the permanent set of each cell, its largest deflection less the spring-back "
     "force / unloading rate (alightsize_sim/crush_cell.permanent_set); the report's analytical strokes are the permanent "
-    "positions at the end of its simulation converted to absorber deflections (Sec. VI.D, l. 2744). The largest "
+    "positions at the end of its simulation converted to absorber deflections (Sec. VI.D). The largest "
     "deflections are in drops.json (simulated_max_deflection_m).",
     "Simulated energy: the work each cell dissipated (crushing and damping). Analytical energy: the report's "
-    "simulation, corrected for the different loading and unloading slopes (l. 2744-2746). Experimental energy: "
-    "the mean static crushing force times the measured permanent deflection (l. 2744).",
+    "simulation, corrected for the different loading and unloading slopes (Sec. VI.D). Experimental energy: "
+    "the mean static crushing force times the measured permanent deflection (Sec. VI.D).",
     "Percent error = (total cell energy - drop energy) / drop energy, as the Percent Error rows of Tables 6-13; "
     "the drop energy is the printed one (horizontal kinetic energy plus weight times the nominal height, the "
-    "nutation and the alightment-system deflection terms, l. 2748). Difference columns: (simulated - printed) / "
+    "nutation and the alightment-system deflection terms, Sec. VI.D). Difference columns: (simulated - printed) / "
     "printed; '-' where the printed value is 0.",
     "Test-model cells (not printed; examples/affdl-tr-66-33/drops/test_model_*.toml and dropNN.toml): per drop "
     "the crushing forces of the report's own simulation of it (one measured curve per cell type and drop, Sec. "
     "VI.A; recovered from the analytical energies, or for the flat drops 1 and 6 the experimental ones: "
     "alightsize/reports/drop_tables.simulation_cell_force), the scaled plateaus for drops 5 and 11, loading ramps of "
     "0.04 ft (upper) and 0.005 ft (lower) and unloading rates such that the report's analytical energies follow "
-    "from its analytical strokes (E = F (s - d), d = F/2 (1/k_load - 1/k_unload), l. 2746; "
+    "from its analytical strokes (E = F (s - d), d = F/2 (1/k_load - 1/k_unload), Sec. VI.D; "
     "docs/notes/drop-test-data.md section 5); capsule bottom 0.5 ft below the CG.",
     "Table 12 (drop 9): the analytical energy rows of the upper and lower cells are printed swapped (GUIDE); "
     "they are shown swapped back (alightsize/reports/drop_tables.CORRECTIONS); the total 2,680 ft-lb is unchanged.",
@@ -165,7 +165,7 @@ def drop_entry(drop: Drop) -> dict:
 
 def closure(entries: list[dict]) -> dict:
     """Mean and largest |energy error| over the drops with a table, per source (the printed Percent Errors for the
-    report's columns; cf. l. 2750: analytical mean < 0.5 %, largest 4.1 %; experimental mean 22.9 %, largest 30.0 %),
+    report's columns; cf. Sec. VI.D: analytical mean < 0.5 %, largest 4.1 %; experimental mean 22.9 %, largest 30.0 %),
     and the simulated total strokes against the analytical ones."""
     tabled = [e["totals"] for e in entries if e["table"] is not None]
     out = {}

@@ -1,24 +1,24 @@
 """Drop tests of the articulated-leg test model, AFFDL-TR-66-33 Sec. VI (Table 5, Sec. VI.A-D, Tables 6-13) and
 App. VI (test model, test technique).
 
-Transcribed from /work/shared/reference/000_9b9e1976ecb8d0f1.txt ("l." = line of that file), values as printed,
-in the printed units (ft, ft/s, deg, lb, ft-lb, slug ft^2); the unit is in each key name. Misprints are kept as
+Transcribed from the published report (cited by section, table, equation and appendix), values as printed, in
+the printed units (ft, ft/s, deg, lb, ft-lb, slug ft^2); the unit is in each key name. Misprints are kept as
 printed and listed in MISPRINTS; `corrected_strokes_energies()` applies the corrections in CORRECTIONS to a copy.
 docs/notes/drop-test-data.md explains the tables, the conventions and how to turn a drop into a scene.
 
-- Table 5 (l. 2245-2259): initial conditions of drops 1-6 and 8-11 (no drop 7, deleted for binding of the
-  parallelogram load pads, l. 2279, 2507, 2742). Columns ROLL R, YAW Y, PITCH P (program inputs, deg, 3-2-1 from
-  the vertical frame kappa), VERTICAL INCLINATION theta (= acos(cos Y cos P)), TERRAIN SLOPE gamma, TRANSLATIONAL
+- Table 5: initial conditions of drops 1-6 and 8-11 (no drop 7, deleted for binding of the
+  parallelogram load pads, Sec. VI.B, Drop 7; Sec. VI.D). Columns ROLL R, YAW Y, PITCH P (program inputs, deg, 3-2-1
+  from the vertical frame kappa), VERTICAL INCLINATION theta (= acos(cos Y cos P)), TERRAIN SLOPE gamma, TRANSLATIONAL
   VELOCITIES V1 (cross), V2 (horizontal), V3 (vertical, + up) ft/s. The slope column is blank for drops 2-9 and
   holds a down arrow for drop 10; V1 is blank for drops 2-10 and a down arrow for drop 11: the arrows are the
   ends of printed "ditto" lines carrying the 0. of drop 1 down the column (read here as 0.0; the printed cell is
   kept in "printed"). No roll-rate column: the rates are zero (not printed).
-- Tables 6-13 (l. 2756-3020): per drop, per leg 1-4, per cell (upper = parallelogram / psi cell, lower =
+- Tables 6-13: per drop, per leg 1-4, per cell (upper = parallelogram / psi cell, lower =
   peg-leg / alpha cell) the permanent stroke (ft) and absorbed energy (ft-lb), experimental (post-drop
-  measurement; energy = mean static crushing force x permanent deflection, l. 2744) and analytical (digital
-  simulation; energy corrected for the different loading and unloading slopes, l. 2744-2746), with the totals and
-  "Percent Error" = (total - drop energy) / drop energy. Drops 5, 7 and 11 have no table (l. 2742).
-- Sec. VI.A (l. 2261-2275) and App. VI (l. 5220, 5267-5273): how the cell forces were set; no per-drop force is
+  measurement; energy = mean static crushing force x permanent deflection, Sec. VI.D) and analytical (digital
+  simulation; energy corrected for the different loading and unloading slopes, Sec. VI.D), with the totals and
+  "Percent Error" = (total - drop energy) / drop energy. Drops 5, 7 and 11 have no table (Sec. VI.D).
+- Sec. VI.A and App. VI (Test Model; Test Technique): how the cell forces were set; no per-drop force is
   printed. CELL_FORCES quotes the text; `implied_static_force()` recovers the measured mean static crushing force
   of each cell from the experimental columns (derived, not printed).
 """
@@ -29,40 +29,40 @@ import copy
 import math
 import statistics
 
-SOURCE = "/work/shared/reference/000_9b9e1976ecb8d0f1.txt"
-
 LEGS = (1, 2, 3, 4)
 CELLS = ("upper", "lower")       # upper = parallelogram (psi) cell, lower = peg-leg (alpha) cell
 
-# ------------------------------------------------------------------ App. VI test model (l. 5212-5253)
+# ------------------------------------------------------------------ App. VI test model (Table 27)
 TEST_MODEL = {
-    "total_weight_lb": 228.7,                     # l. 5224 "228.7 lb (including legs)"
-    "legs_weight_lb": 31.2,                       # l. 5225 "Leg Weight 31.2 lb" (the four legs together)
-    "pitch_yaw_inertia_slug_ft2": 3.326,          # l. 5226 "Pitch and Yaw Inertia"
-    "roll_inertia_slug_ft2": 2.77,                # l. 5227 "Roll Inertia"
-    "cg_above_lower_parallelogram_pivots_ft": 0.33,   # l. 5228 "0.33 feet above lower parallelogram pivots and on
-                                                  # the vertical axis"
-    "legs": 4,                                    # l. 5216 (four legs; numbering of Fig. 14, l. 2330)
-    "length_scale_to_3000_lb": 4.0,               # Table 27 l. 5243; l. 4866 (test model -> configs 3, 4, 5, 7)
-    "length_scale_to_300_lb": 1.825,              # Table 27 l. 5243; l. 4866 (test model -> config 9)
-    # App. V: per-leg assembly weights of the test model, lb (l. 4907-4914; total printed 6.71)
+    "total_weight_lb": 228.7,                     # App. VI, Test Model "228.7 lb (including legs)"
+    "legs_weight_lb": 31.2,                       # App. VI, Test Model "Leg Weight 31.2 lb" (the four legs together)
+    "pitch_yaw_inertia_slug_ft2": 3.326,          # App. VI, Test Model "Pitch and Yaw Inertia"
+    "roll_inertia_slug_ft2": 2.77,                # App. VI, Test Model "Roll Inertia"
+    "cg_above_lower_parallelogram_pivots_ft": 0.33,   # App. VI, Test Model "0.33 feet above lower parallelogram
+                                                      # pivots and on the vertical axis"
+    "legs": 4,                                    # App. VI (four legs; numbering of Fig. 14, Sec. VI.B, Drop 2)
+    "length_scale_to_3000_lb": 4.0,               # Table 27; App. V, articulated leg, test model (configs 3-5, 7)
+    "length_scale_to_300_lb": 1.825,              # Table 27; App. V, articulated leg, test model (config 9)
+    # App. V: per-leg assembly weights of the test model, lb (Table 23; total printed 6.71)
     "leg_assembly_weights_lb": {
-        "Lower Truss": 1.27,                      # l. 4909
-        "Upper Truss": 0.82,                      # l. 4910
-        "Parallelogram Absorber": 1.22,           # l. 4911
-        "Parallelogram Post": 2.30,               # l. 4912 (the eq. 107 scalings at l. 4949, 4955, 4961 use 2.07)
-        "Peg Leg": 1.10,                          # l. 4913
+        "Lower Truss": 1.27,                      # Table 23
+        "Upper Truss": 0.82,                      # Table 23
+        "Parallelogram Absorber": 1.22,           # Table 23
+        "Parallelogram Post": 2.30,               # Table 23 (App. V's eq. 107 scalings of the post, the remainder
+                                                  # of post and the absorber rod use 2.07)
+        "Peg Leg": 1.10,                          # Table 23
     },
-    "leg_assembly_total_lb": 6.71,                # l. 4914
+    "leg_assembly_total_lb": 6.71,                # Table 23
     # App. V eq. 107 test-model member data (steel, 0.283 lb/in^3): cross-section areas, in^2
-    "member_material_density_lb_in3": 0.283,      # l. 4921 (rho_TM)
-    "upper_truss_area_in2": 0.0984,               # l. 4921
-    "lower_truss_area_in2": 0.065,                # l. 4926
-    "peg_leg_strut_area_in2": 0.078,              # l. 4931
-    "peg_leg_absorber_rod_area_in2": 0.045,       # l. 4961
-    # App. IV: test-model peg-leg ring section, scaled x4 (and x1.14 radially) for configs 3-5, 7 (l. 4228)
-    "peg_leg_ring_inertia_in4": 0.117,            # l. 4656 "0.117 (1.825)^3 (0.432)"
-    "peg_leg_ring_c_in": 0.70,                    # l. 4658 "0.70 (1.825)"
+    "member_material_density_lb_in3": 0.283,      # App. V, configs 3-5, 7, Upper Truss (rho_TM)
+    "upper_truss_area_in2": 0.0984,               # App. V, configs 3-5, 7, Upper Truss
+    "lower_truss_area_in2": 0.065,                # App. V, configs 3-5, 7, Lower Truss
+    "peg_leg_strut_area_in2": 0.078,              # App. V, configs 3-5, 7, Peg Leg Strut
+    "peg_leg_absorber_rod_area_in2": 0.045,       # App. V, configs 3-5, 7, Peg Leg Energy Absorber Rod and Link
+    # App. IV: test-model peg-leg ring section, scaled x4 (and x1.14 radially) for configs 3-5, 7 (App. IV, configs
+    # 3-5, 7, Peg Leg Ring)
+    "peg_leg_ring_inertia_in4": 0.117,            # App. IV, config 9, Peg Leg Ring "0.117 (1.825)^3 (0.432)"
+    "peg_leg_ring_c_in": 0.70,                    # App. IV, config 9, Peg Leg Ring "0.70 (1.825)"
 }
 TEST_MODEL_LINES = {
     "total_weight_lb": 5224, "legs_weight_lb": 5225, "pitch_yaw_inertia_slug_ft2": 5226,
@@ -73,22 +73,22 @@ TEST_MODEL_LINES = {
     "peg_leg_ring_inertia_in4": 4656, "peg_leg_ring_c_in": 4658,
 }
 
-# Derived, NOT printed: the test model is configuration 3's leg at 1/4 scale (l. 4866: "length scale factor from
-# the test model to configuration numbers 3, 4, 5 and 7 is 4.0"), so the printed full-scale dimensions
-# (l. 700-702) give these. The test model's initial psi is not printed; -15 deg is "the test configuration"
-# angle of l. 700 (inferred).
+# Derived, NOT printed: the test model is configuration 3's leg at 1/4 scale (App. V, articulated leg, test model:
+# "length scale factor from the test model to configuration numbers 3, 4, 5 and 7 is 4.0"), so the printed full-scale
+# dimensions (Sec. III.B.1) give these. The test model's initial psi is not printed; -15 deg is "the test configuration"
+# angle of Sec. III.B.1 (inferred).
 TEST_MODEL_DERIVED = {
-    "parallelogram_member_length_AU_in": 44.0 / 4,        # 11.0 (AU 44 in, l. 700)
+    "parallelogram_member_length_AU_in": 44.0 / 4,        # 11.0 (AU 44 in, Sec. III.B.1)
     "parallelogram_pivot_spacing_AD_in": 24.0 / 4,        # 6.0 (AD 24 in, GUIDE / Sec. III)
-    "peg_leg_length_AL_in": 25.0 / 4,                     # 6.25 (l. 702)
-    "fulcrum_ring_diameter_in": 16.0 / 4,                 # 4.0 (l. 702)
-    "flat_drop_bottom_clearance_in": 25.0 / 4,            # 6.25 (l. 700, at psi0 -15 deg)
-    "initial_psi_deg": -15.0,                             # l. 700 (inferred for the test model)
+    "peg_leg_length_AL_in": 25.0 / 4,                     # 6.25 (Sec. III.B.1)
+    "fulcrum_ring_diameter_in": 16.0 / 4,                 # 4.0 (Sec. III.B.1)
+    "flat_drop_bottom_clearance_in": 25.0 / 4,            # 6.25 (Sec. III.B.1, at psi0 -15 deg)
+    "initial_psi_deg": -15.0,                             # Sec. III.B.1 (inferred for the test model)
     "capsule_weight_without_legs_lb": 228.7 - 31.2,       # 197.5; x15.2 = 3002 lb, x1.52 = 300.2 lb (Table 27)
     "mass_slug": 228.7 / 32.174,                          # 7.108
 }
 
-# Table 27 (l. 5238-5253), the factors used to scale the test model. "Mass Density 2.5" (300 lb) is 0.25 (GUIDE).
+# Table 27, the factors used to scale the test model. "Mass Density 2.5" (300 lb) is 0.25 (GUIDE).
 SCALE_FACTORS = {
     #                    3000 lb  300 lb
     "acceleration":       (1.0,    1.0),
@@ -105,7 +105,7 @@ SCALE_FACTORS = {
     "velocity":           (2.0,    1.35),
 }
 
-# ------------------------------------------------------------------ Table 5, l. 2245-2259
+# ------------------------------------------------------------------ Table 5
 # Printed cells in column order R, Y, P, theta, gamma, V1, V2, V3 ("" = blank; "↓" = arrow head of a ditto line).
 _T5_PRINTED = {
     1: (2250, ("0.", "0.", "0.", "0.", "0.", "0.", "0.", "-17.5")),
@@ -133,23 +133,23 @@ _DROP_TEXT = {
     4: (2342, "large capsule pitch with horizontal and vertical velocity"),
     5: (2346, "vertical velocity raised from 17.5 to 24.0 ft/s to fully stroke the parallelograms; inclination "
               "6.3 deg, no horizontal velocity; capsule bottom hit the asphalt at 8 ft/s (1 ft free fall) with 89 % "
-              "of the kinetic energy absorbed (l. 2499); no stroke table (l. 2742)"),
+              "of the kinetic energy absorbed (Sec. VI.B, Drop 5); no stroke table (Sec. VI.D)"),
     6: (2503, "vertical velocity only; all four legs contacted simultaneously"),
     8: (2511, "vertical velocity, inclination about 12 deg; touchdown 3, 4, 2, 1 with 4 and 2 almost simultaneous; "
-              "repeat of drop 7 after a design change to the loading pads (l. 2279)"),
+              "repeat of drop 7 after a design change to the loading pads (Sec. VI.B)"),
     9: (2517, "largest horizontal velocity, 8.65 ft/s instead of the normal 7.5 (33 % more horizontal kinetic "
               "energy); flat drop intended, film shows 2 deg; about 2 deg more would reproduce the two steps of "
               "Fig. 83"),
     10: (2523, "horizontal and vertical velocity with a 9 deg capsule inclination"),
     11: (2640, "22 deg slope; release mis-programmed: horizontal velocity low, vertical high, pitched into the "
                "slope 8.5 deg; the capsule tumbled backward down the slope; simulated with increased cell forces; "
-               "stable at 7.8 deg inclination (l. 2642); no stroke table (l. 2742)"),
+               "stable at 7.8 deg inclination (Sec. VI.B, Drop 11); no stroke table (Sec. VI.D)"),
 }
 
-# Cargo / scale (l. 2279): drops 1-5 human cargo, 20 g limit; drops 6-11 electronic cargo, 50 g limit. The
-# "soft"/"hard" lander of App. VI (l. 5220) is the same model with different honeycomb forces; that drops 1-5
+# Cargo / scale (Sec. VI.B): drops 1-5 human cargo, 20 g limit; drops 6-11 electronic cargo, 50 g limit. The
+# "soft"/"hard" lander of App. VI (Test Model) is the same model with different honeycomb forces; that drops 1-5
 # model the 3000 lb capsule (configs 3-8) and 6-11 the 300 lb capsule (config 9) is inferred from the cargo
-# (Sec. II, l. 556, 572) and the cell forces implied by Tables 6-13 (see implied_static_force()).
+# (Sec. II.A) and the cell forces implied by Tables 6-13 (see implied_static_force()).
 _CARGO = {d: ("human", 20.0, "3000 lb") if d <= 5 else ("electronic", 50.0, "300 lb")
           for d in (1, 2, 3, 4, 5, 6, 8, 9, 10, 11)}
 
@@ -174,13 +174,15 @@ for _d, (_line, _cells) in _T5_PRINTED.items():
         "yaw_deg": _y,                          # YAW, about the once-rotated 2 axis
         "pitch_deg": _p,                        # PITCH, about body chi-1
         "vertical_inclination_deg": _th,        # theta, angle of chi-3 from the vertical
-        "slope_deg": _g,                        # gamma (l. 1327, 1345); "" and "↓" read as 0
-        "cross_velocity_ft_s": _v1,             # V1 (+ out of the page, l. 1460)
-        "horizontal_velocity_ft_s": _v2,        # V2 (+ downhill / away from the terrain for gamma > 0, l. 1460, 9148)
-        "vertical_velocity_ft_s": _v3,          # V3 (+ up, must be negative, l. 1460)
+        "slope_deg": _g,                        # gamma (Sec. V.B; eq. 1); "" and "↓" read as 0
+        "cross_velocity_ft_s": _v1,             # V1 (+ out of the page, Sec. V.D.4)
+        "horizontal_velocity_ft_s": _v2,        # V2 (+ downhill / away from the terrain for gamma > 0, Sec. V.D.4;
+                                                # App. VIII)
+        "vertical_velocity_ft_s": _v3,          # V3 (+ up, must be negative, Sec. V.D.4)
         "roll_rate_rad_s": 0.0,                 # not printed (no column); all body rates taken as zero
-        "surface": "asphalt, pointed peg-leg tips dug in: non-slipping, simulated with mu > 1,000,000 (l. 2271, 702)",
-        "cargo": _CARGO[_d][0], "g_limit": _CARGO[_d][1],          # l. 2279
+        "surface": ("asphalt, pointed peg-leg tips dug in: non-slipping, simulated with mu > 1,000,000 (Sec. VI.A; "
+                    "Sec. III.B.1)"),
+        "cargo": _CARGO[_d][0], "g_limit": _CARGO[_d][1],          # Sec. VI.B
         "scaled_capsule": _CARGO[_d][2],                            # inferred (see _CARGO)
         "text_line": _DROP_TEXT[_d][0], "text": _DROP_TEXT[_d][1],
         "contact_order_printed": _CONTACT_ORDER_PRINTED.get(_d, (None, None))[1],
@@ -190,11 +192,11 @@ for _d, (_line, _cells) in _T5_PRINTED.items():
     }
 
 DELETED_DROPS = {
-    7: ("no Table 5 row, no figures, no table: binding of the parallelogram load pads (l. 2279, 2507); "
-        "'binding of an energy absorber on leg 4' (l. 2742); drop 8 repeats it after a pad design change"),
+    7: ("no Table 5 row, no figures, no table: binding of the parallelogram load pads (Sec. VI.B, Drop 7); "
+        "'binding of an energy absorber on leg 4' (Sec. VI.D); drop 8 repeats it after a pad design change"),
 }
 
-# Drops with initial conditions but no stroke/energy table (l. 2742).
+# Drops with initial conditions but no stroke/energy table (Sec. VI.D).
 NO_STROKE_TABLE = {
     5: "simulation stopped when the capsule bottom interfered with the ground; the test model stroked further",
     11: "simulation terminated when the model pitched 60 deg beyond the vertical; the test model tumbled on",
@@ -232,7 +234,7 @@ CELL_FORCES = {
                                       "force deflection characteristics for each energy cell."),
 }
 
-# Which characteristic Sec. VI.A prescribes per drop (derived from Table 5 and l. 2261): "largest" for the
+# Which characteristic Sec. VI.A prescribes per drop (derived from Table 5 and Sec. VI.A): "largest" for the
 # non-inclined drops, "leading" (with the leg) for the inclined ones. Drop 9 was intended flat but has 2 deg.
 CELL_FORCE_RULE = {
     1: ("largest", None), 6: ("largest", None),
@@ -247,7 +249,7 @@ SCALED_PLATEAU_FORCE_LB = {
     "300 lb": {"upper": 6_688 / 1.52, "lower": 5_852 / 1.52},       # config 9: 4400, 3850
 }
 
-# ------------------------------------------------------------------ Tables 6-13, l. 2756-3020
+# ------------------------------------------------------------------ Tables 6-13
 def _side(up_s, up_e, lo_s, lo_e, total, pct, lines):
     return {"upper": {"stroke_ft": up_s, "energy_ft_lb": up_e},
             "lower": {"stroke_ft": lo_s, "energy_ft_lb": lo_e},
@@ -339,7 +341,7 @@ def corrected_strokes_energies() -> dict:
 
 def implied_static_force(drop: int, leg: int, cell: str) -> tuple[float, float] | None:
     """Derived (not printed): the mean static crushing force (lb) behind one experimental energy, energy / stroke
-    (l. 2744 defines the energy as that force times the permanent deflection), and its rounding bound from the
+    (Sec. VI.D defines the energy as that force times the permanent deflection), and its rounding bound from the
     1 ft-lb energy rounding (+-0.5 / stroke). None where the stroke is 0. Within a drop the four cells of a type
     agree to the rounding (one force per drop and cell type; exceptions: drop 2 lower leg 3, drop 9 upper legs
     1/2, MISPRINTS): soft drops 1-4 upper 2,300-2,450 lb, lower 1,900-2,100 lb; hard drops 6-10 upper
@@ -368,12 +370,12 @@ def simulation_fit_points(drop: int, cell: str) -> list[tuple[float, float]]:
 
 def simulation_cell_force(drop: int, cell: str) -> tuple[float, str]:
     """Derived (not printed): the crushing force (lb) of one cell type in the report's simulation of a drop with a
-    table, and how it was found. Sec. VI.A (l. 2261): the simulation used one measured curve per cell type and
+    table, and how it was found. Sec. VI.A: the simulation used one measured curve per cell type and
     drop, the largest force for non-inclined drops, the leading leg's for inclined ones. The analytical energies
-    follow E = F (s - d) from the analytical strokes s (d: the loading/unloading slope correction, l. 2746), so a
+    follow E = F (s - d) from the analytical strokes s (d: the loading/unloading slope correction, Sec. VI.D), so a
     least-squares line through the cells with enough stroke gives F ("analytical fit"). Drops 1 and 6 stroke all
     four cells alike, which leaves F and d apart undetermined: there F is the mean static crushing force the
-    experimental energies imply (`implied_static_force`, l. 2744), weighted by its rounding bound
+    experimental energies imply (`implied_static_force`, Sec. VI.D), weighted by its rounding bound
     ("experimental")."""
     pts = simulation_fit_points(drop, cell)
     if len(pts) >= 2 and max(s for s, _ in pts) - min(s for s, _ in pts) > 1e-3:
@@ -384,7 +386,7 @@ def simulation_cell_force(drop: int, cell: str) -> tuple[float, str]:
     return sum(w * f for w, (f, _) in zip(weights, implied)) / sum(weights), "experimental"
 
 
-# ------------------------------------------------------------------ energy closure (l. 2748-2750, Fig. 102)
+# ------------------------------------------------------------------ energy closure (Sec. VI.D, Fig. 102)
 ENERGY_CLOSURE = {
     # drop: (drop energy, experimental total, printed %, analytical total, printed %)
     d: (t["drop_energy_ft_lb"], t["experimental"]["total_energy_ft_lb"], t["experimental"]["percent_error"],
@@ -410,13 +412,13 @@ ENERGY_CLOSURE_TEXT = {
 G_FT_S2 = 32.174
 
 
-NOMINAL_DROP_HEIGHT_FT = {1: 5.0, 2: 5.0, 3: 5.0, 4: 5.0, 6: 10.0, 8: 10.0, 9: 10.0, 10: 10.0}   # l. 3026 (5 ft
+NOMINAL_DROP_HEIGHT_FT = {1: 5.0, 2: 5.0, 3: 5.0, 4: 5.0, 6: 10.0, 8: 10.0, 9: 10.0, 10: 10.0}   # Sec. VI.D (5 ft
 # drops = V3 17.5, 10 ft drops = V3 25.3; drops 5 and 11 have no printed height)
 
 
 def drop_energy_check(drop: int, weight_lb: float = 228.7) -> dict:
     """Derived: kinetic energy of Table 5's V2 and V3 at impact vs the printed drop energy; the remainder divided
-    by the weight is the extra CG fall (nutation + alightment-system deflection terms of l. 2748). Also the same
+    by the weight is the extra CG fall (nutation + alightment-system deflection terms of Sec. VI.D). Also the same
     remainder over the nominal 5 / 10 ft height instead of V3 ("extra_over_nominal_ft")."""
     c = DROPS[drop]
     m = weight_lb / G_FT_S2
@@ -471,7 +473,7 @@ MISPRINTS = [
      "printed": "blank cells; '↓' in gamma (drop 10) and V1 (drop 11)",
      "reading": "0.0: ends of ditto lines from drop 1's 0. (gamma 0 for drops 1-10, 22 for drop 11; V1 0 for all)",
      "evidence": "the arrows sit on the last row of each blank run; the text speaks of flat asphalt except drop 11 "
-                 "(l. 2640) and of in-plane horizontal velocity"},
+                 "(Sec. VI.B, Drop 11) and of in-plane horizontal velocity"},
     {"where": "App. VI leg weight vs App. V test-model leg assemblies", "lines": (5225, 4914),
      "printed": "Leg Weight 31.2 lb; per-leg assemblies total 6.71 lb",
      "reading": "4 x 6.71 = 26.84 lb, 4.36 lb short of 31.2 (honeycomb, rods, caps or fittings presumably not in "

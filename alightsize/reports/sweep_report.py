@@ -24,7 +24,7 @@ from alightsize.landings.study import Study
 from alightsize.common.units import registry
 
 SCHEMA = "alightsize.sweep/1"
-# The printed legends: Table 2 (l. 912-914), Tables 3-4 (l. 1129-1133, 1160-1166); axial, body contact and
+# The printed legends: Table 2, Tables 3-4; axial, body contact and
 # failed have no printed symbol.
 SYMBOL = {"stable": "X", "bottomed_alpha": "●", "bottomed_psi": "■", "bottomed_rotational_pad": "●",
           "bottomed_axial": "▲", "walking": "+", "time_out": "+", "tipped": "◆", "body_contact": "▼",

@@ -10,16 +10,17 @@ LUGS = {"shape": "rectangle", "width": "0.40 in", "height": "0.50 in"}
 
 
 def test_app_iv_lower_leg_slip_joint_adds_collinear_loads():
-    """App. IV l. 3906-3908: (w1 + w2)/d = (261 + 6070)/3.00 = 2,110 psi (a load per inch: 1 in of bearing
-    reproduces it); the two loads press the same surface, combine = "sum". Exact arithmetic: 1e-12."""
+    """App. IV telescoping leg, Lower Leg Tube: (w1 + w2)/d = (261 + 6070)/3.00 = 2,110 psi (a load per inch: 1 in of
+    bearing reproduces it); the two loads press the same surface, combine = "sum". Exact arithmetic: 1e-12."""
     o = outcome({"kind": "bearing", "loads": ["261 lbf", "6070 lbf"], "combine": "sum", "diameter": "3.00 in",
                  "bearing_length": "1 in"}, None, "be-31al")
     assert o.stress / PSI == pytest.approx((261 + 6070) / 3.00, rel=1e-12)
 
 
 def test_app_iv_upper_cap_lugs():
-    """App. IV l. 4096-4102: 3,930/(0.25 x 0.40) = 39,300 psi (printed 39,400), f = 69,000/39,400 = 1.75; one
-    unit of the printed stress's third figure: 0.3 %; f (1.756 from 39,300) to one unit of its printed digit."""
+    """App. IV telescoping leg, Upper Cap Lugs: 3,930/(0.25 x 0.40) = 39,300 psi (printed 39,400), f = 69,000/39,400 =
+    1.75; one unit of the printed stress's third figure: 0.3 %; f (1.756 from 39,300) to one unit of its printed
+    digit."""
     o = outcome({"kind": "bearing", "loads": ["3930 lbf"], "diameter": "0.25 in", "bearing_length": "0.40 in"}, LUGS)
     assert o.stress / PSI == pytest.approx(39_400, rel=0.003)
     assert o.factor == pytest.approx(1.75, abs=0.01)

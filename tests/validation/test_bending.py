@@ -27,7 +27,8 @@ def test_rod_bending_is_32_m_over_pi_d_cubed():
 
 def test_rectangle_bending_is_6_m_over_b_h_squared():
     """App. IV swivel and lugs section: b = 0.40, h = 0.50 in, M = 1,075 x 0.5 lb-in: sigma = 6 M/(b h^2) =
-    32,250 psi (the report printed 30,000 for this, App. IV l. 4104-4126; 32,250 is its own substitution)."""
+    32,250 psi (the report printed 30,000 for this, App. IV telescoping leg, Upper Cap Lugs; 32,250 is its own
+    substitution)."""
     o = outcome({"kind": "bending", "moment_force": "1075 lbf", "moment_arm": "0.5 in"},
                 {"shape": "rectangle", "width": "0.40 in", "height": "0.50 in"})
     assert o.stress / PSI == pytest.approx(32_250, rel=1e-12)

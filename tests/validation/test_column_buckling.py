@@ -64,8 +64,8 @@ def test_a_long_column_is_euler():
 
 
 def test_app_iv_telescoping_leg_euler_load():
-    """App. IV l. 3888-3892: P_cr = pi^2 (34e6)(0.478)/30.5^2, printed 167,000 lb; the substitution gives
-    172,400 (the printed value is 3.2 % low): our line is the substitution, 1e-9."""
+    """App. IV telescoping leg, Lower Leg Tube: P_cr = pi^2 (34e6)(0.478)/30.5^2, printed 167,000 lb; the substitution
+    gives 172,400 (the printed value is 3.2 % low): our line is the substitution, 1e-9."""
     o = outcome(check(30.5, 3750, "euler"), {"shape": "tube", "outside_diameter": "3.00 in", "wall": "0.050 in",
                                                "inertia": "0.478 in^4"}, "be-31al")
     assert step(o, "Pcr") / LBF == pytest.approx(pi ** 2 * 34e6 * 0.478 / 30.5 ** 2, rel=1e-9)

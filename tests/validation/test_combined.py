@@ -8,17 +8,18 @@ CHECK = {"kind": "combined", "load": "3750 lbf", "moment_force": "1045 lbf", "mo
 
 
 def test_app_iv_telescoping_lower_leg_tube():
-    """App. IV l. 3866-3918: sigma_B = 16,150 (1.50)/0.478 = 50,500, sigma_C = 3750/0.463 = 8,100, sigma_max =
-    58,600 psi, f = 74,000/58,600 = 1.26. The printed M is 16,150 for 1045 x 15.5 = 16,197.5 (-0.3 %): 1 %."""
+    """App. IV telescoping leg, Lower Leg Tube: sigma_B = 16,150 (1.50)/0.478 = 50,500, sigma_C = 3750/0.463 = 8,100,
+    sigma_max = 58,600 psi, f = 74,000/58,600 = 1.26. The printed M is 16,150 for 1045 x 15.5 = 16,197.5 (-0.3 %): 1
+    %."""
     o = outcome(CHECK, LOWER_LEG, "be-31al")
     assert o.stress / PSI == pytest.approx(58_600, rel=0.01)
     assert o.factor == pytest.approx(1.26, abs=0.005)
 
 
 def test_app_iv_upper_cap_lugs_from_the_printed_inputs():
-    """App. IV l. 4104-4126, lugs 0.40 x 0.50 in under 3,750 lb and 1,075 lb x 0.5 in: sigma_B = 32,250 (printed
-    30,000, a slip) + sigma_C = 18,750 = 51,000 psi, f = 69,000/51,000 = 1.353 (the report's 1.42 does not
-    follow; tests/test_reference_appendix_iv_v.py records it). Exact arithmetic: 1e-12."""
+    """App. IV telescoping leg, Upper Cap Lugs, lugs 0.40 x 0.50 in under 3,750 lb and 1,075 lb x 0.5 in: sigma_B =
+    32,250 (printed 30,000, a slip) + sigma_C = 18,750 = 51,000 psi, f = 69,000/51,000 = 1.353 (the report's 1.42 does
+    not follow; tests/test_reference_appendix_iv_v.py records it). Exact arithmetic: 1e-12."""
     o = outcome({"kind": "combined", "load": "3750 lbf", "moment_force": "1075 lbf", "moment_arm": "0.5 in"},
                 {"shape": "rectangle", "width": "0.40 in", "height": "0.50 in"})
     assert o.stress / PSI == pytest.approx(32_250 + 18_750, rel=1e-12)

@@ -9,9 +9,9 @@ UPPER_TRUSS = tube(2.75, 0.0675)          # App. IV configurations 3-5, 7 upper 
 
 
 def test_app_iv_upper_truss():
-    """App. IV l. 4150-4164: 33,784 lb on pi (2.67)(0.0675) = 0.566 in^2, sigma = 59,700 psi, f = 74,000/59,700 =
-    1.24. The report takes d = 2.67 for 2.75 - 0.0675 = 2.6825 in (0.47 % low) and rounds A: 1 % on sigma, and
-    one unit of f's last printed digit (0.01)."""
+    """App. IV configs 3-5, 7, Upper Truss: 33,784 lb on pi (2.67)(0.0675) = 0.566 in^2, sigma = 59,700 psi, f =
+    74,000/59,700 = 1.24. The report takes d = 2.67 for 2.75 - 0.0675 = 2.6825 in (0.47 % low) and rounds A: 1 % on
+    sigma, and one unit of f's last printed digit (0.01)."""
     o = outcome({"kind": "compression", "load": "33784 lbf"}, UPPER_TRUSS, "be-31al")
     assert o.stress / PSI == pytest.approx(59_700, rel=0.01)
     assert o.factor == pytest.approx(1.24, abs=0.01)

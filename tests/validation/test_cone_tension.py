@@ -5,8 +5,8 @@ from member_cases import PSI, outcome
 
 
 def test_app_iv_peg_leg_cone():
-    """App. IV l. 4254-4264: 30,000/(10 (0.25)^2) = 48,000 psi, f = 69,000/48,000 = 1.4375, printed 1.43 (the
-    report truncates): exact arithmetic, 1e-12; f to one unit of its printed digit."""
+    """App. IV configs 3-5, 7, Peg Leg Cone: 30,000/(10 (0.25)^2) = 48,000 psi, f = 69,000/48,000 = 1.4375, printed
+    1.43 (the report truncates): exact arithmetic, 1e-12; f to one unit of its printed digit."""
     o = outcome({"kind": "cone_tension", "load": "30000 lbf", "thickness": "0.25 in"}, None)
     assert o.stress / PSI == pytest.approx(48_000, rel=1e-12)
     assert o.factor == pytest.approx(1.43, abs=0.01)

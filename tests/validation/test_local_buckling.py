@@ -25,8 +25,8 @@ def check(load: str = "1000 lbf", formula: str = "sp8007", **extra) -> dict:
 
 
 def test_app_iv_telescoping_lower_leg_is_capped_at_yield():
-    """App. IV l. 3898-3904: sigma_LB = 0.4 (34e6)(0.0436)/3.0 = 198,000 psi (the line, 0.5 % for its three
-    figures), above Be(31)Al's 74,000 psi yield: the allowable is 74,000. The check's wall is the wall of its
+    """App. IV telescoping leg, Lower Leg Tube: sigma_LB = 0.4 (34e6)(0.0436)/3.0 = 198,000 psi (the line, 0.5 % for
+    its three figures), above Be(31)Al's 74,000 psi yield: the allowable is 74,000. The check's wall is the wall of its
     P/A too: 3750/(pi 2.9564 0.0436) + 16,197.5 (1.5)/0.478 = 60,090 psi, f = 1.232 (hand, 1e-9)."""
     o = outcome(APP_IV, LOWER_LEG, "be-31al", rules="app_iv")
     assert step(o, "σLB") / PSI == pytest.approx(198_000, rel=0.005)

@@ -7,8 +7,8 @@ from member_cases import LBF, outcome
 
 
 def test_app_iv_double_pin_swivel():
-    """App. IV l. 4010-4018: 9,300 lb (0.25 in internal-wrenching bolts in double shear) / 3,930 lb = 2.37;
-    exact arithmetic of the printed resultant: 1e-12."""
+    """App. IV telescoping leg, Double Pin Swivel: 9,300 lb (0.25 in internal-wrenching bolts in double shear) / 3,930
+    lb = 2.37; exact arithmetic of the printed resultant: 1e-12."""
     o = outcome({"kind": "pin_shear", "loads": ["3930 lbf"], "allowable_load": "9300 lbf"}, None)
     assert o.factor == pytest.approx(9300 / 3930, rel=1e-12) and round(o.factor, 2) == 2.37
 

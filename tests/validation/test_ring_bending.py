@@ -10,8 +10,8 @@ RING = {"shape": "given", "inertia": "8.55 in^4", "c": "2.80 in"}          # App
 
 
 def test_app_iv_peg_leg_ring():
-    """App. IV l. 4232-4244: M = 49,000 (12.8)/4 = 157,000 lb-in, sigma = 157,000 (2.8)/8.55 = 51,400 psi, f =
-    69,000/51,400 = 1.34. M printed 157,000 for 156,800 (0.13 %): 0.5 % on sigma; f to its printed digit."""
+    """App. IV configs 3-5, 7, Peg Leg Ring: M = 49,000 (12.8)/4 = 157,000 lb-in, sigma = 157,000 (2.8)/8.55 = 51,400
+    psi, f = 69,000/51,400 = 1.34. M printed 157,000 for 156,800 (0.13 %): 0.5 % on sigma; f to its printed digit."""
     o = outcome({"kind": "ring_bending", "load": "49000 lbf", "span": "12.8 in"}, RING)
     assert o.stress / PSI == pytest.approx(51_400, rel=0.005)
     assert o.factor == pytest.approx(1.34, abs=0.005)
