@@ -1,4 +1,5 @@
-"""Shared fixtures: paths of the shipped examples."""
+"""Shared fixtures (paths of the shipped examples) and the folder markers: tests/unit/ is `unit`, tests/validation/
+(the report's numbers, textbook cases, closed forms) is `validation`; `pytest -m validation` runs those alone."""
 
 from pathlib import Path
 
@@ -17,3 +18,10 @@ CONFIGS = ["telescoping", "articulated_3457", "articulated_68", "articulated_9"]
 @pytest.fixture(params=CONFIGS)
 def example(request) -> Path:
     return EXAMPLES / f"{request.param}.toml"
+
+
+def pytest_collection_modifyitems(config, items):
+    for item in items:
+        folder = Path(str(item.fspath)).parent.name
+        if folder in ("unit", "validation"):
+            item.add_marker(folder)

@@ -19,7 +19,7 @@ def test_app_iv_telescoping_lower_leg_tube():
 def test_app_iv_upper_cap_lugs_from_the_printed_inputs():
     """App. IV telescoping leg, Upper Cap Lugs, lugs 0.40 x 0.50 in under 3,750 lb and 1,075 lb x 0.5 in: sigma_B =
     32,250 (printed 30,000, a slip) + sigma_C = 18,750 = 51,000 psi, f = 69,000/51,000 = 1.353 (the report's 1.42 does
-    not follow; tests/test_reference_appendix_iv_v.py records it). Exact arithmetic: 1e-12."""
+    not follow; tests/validation/test_reference_appendix_iv_v.py records it). Exact arithmetic: 1e-12."""
     o = outcome({"kind": "combined", "load": "3750 lbf", "moment_force": "1075 lbf", "moment_arm": "0.5 in"},
                 {"shape": "rectangle", "width": "0.40 in", "height": "0.50 in"})
     assert o.stress / PSI == pytest.approx(32_250 + 18_750, rel=1e-12)

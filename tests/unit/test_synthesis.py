@@ -23,8 +23,9 @@ from alightsize.pipeline.lander import read_lander
 from alightsize.synthesis.evaluate import stroke_used
 from alightsize.synthesis.search import synthesize
 from alightsize.synthesis.spec import FreeParameter, overrides, read_synthesis
+from conftest import ROOT
 
-EXAMPLE = Path(__file__).parents[1] / "examples" / "lunar_lander.toml"
+EXAMPLE = ROOT / "examples" / "lunar_lander.toml"
 
 # A level lunar drop at 3 m/s, two corners (a leg leading, two straddling) and two Monte Carlo landings per
 # candidate; one free parameter and a tiny budget, so the whole search runs in seconds.

@@ -3,7 +3,6 @@ at one instant, and a lift-off located at a jump of its event function (a slide 
 leg landing again on a pitched drop, with no force step."""
 
 import dataclasses
-from pathlib import Path
 
 import numpy as np
 
@@ -11,8 +10,9 @@ import alightsize_sim.landing as landing
 import alightsize_sim.landing_kernel as lk
 from alightsize.model.scene_config import read_scene
 from alightsize_sim.rigid_body import quat_matrix
+from conftest import ROOT
 
-LUNAR = Path(__file__).resolve().parents[1] / "examples" / "lunar_lander.toml"
+LUNAR = ROOT / "examples" / "lunar_lander.toml"
 # Two legs across a 12 deg slope touch at the same instant; each touchdown, located to event_tol, leaves its
 # footpad a hair above the terrain and out of its leg's reach, so it leaves at once.
 SYMMETRIC = {"terrain.slope": "-12 deg", "terrain.mu_static": 1.0, "terrain.mu_dynamic": 0.4,

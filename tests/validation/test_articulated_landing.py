@@ -5,7 +5,6 @@ hard cases of issue 5 (seated peg leg, 3 rad/s roll, walking down a 35 deg slope
 from __future__ import annotations
 
 from multiprocessing import Pool
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -18,8 +17,9 @@ from alightsize_sim.articulated_cells import upper_length
 from alightsize_sim.articulated_kinematics import footpad, nearest_root, roots
 from alightsize_sim.landing import simulate
 from alightsize_sim.legs import pack
+from conftest import ROOT
 
-EX = Path(__file__).resolve().parents[1] / "examples" / "affdl-tr-66-33"
+EX = ROOT / "examples" / "affdl-tr-66-33"
 SCENES = sorted((EX / "scenes").glob("articulated_*.toml"))
 
 

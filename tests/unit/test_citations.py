@@ -4,7 +4,8 @@ equation, figure, appendix), never by line of a private transcription, and hold 
 import re
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parent.parent
+from conftest import ROOT
+
 SHIPPED = ("alightsize", "alightsize_sim", "examples", "templates", "docs", "tests", "benchmarks", "pyproject.toml",
            "README.md")
 SUFFIXES = {".py", ".toml", ".md", ".csv", ".j2", ".txt", ".json", ".yaml", ".yml", ".cfg", ".ini", ".html"}

@@ -23,8 +23,8 @@ from alightsize.landings.study import read_study
 from alightsize.landings.sweep import NEWEST_FIGURE, run_sweep
 from alightsize.landings.probability import wilson_interval
 from alightsize.reports.sweep_report import write_results
+from conftest import ROOT
 
-ROOT = Path(__file__).resolve().parent.parent
 SCENE = ROOT / "examples" / "affdl-tr-66-33" / "scenes" / "telescoping_config2.toml"
 
 

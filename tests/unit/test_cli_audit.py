@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 from alightsize.cli import main
-from conftest import EXAMPLES
+from conftest import ROOT, EXAMPLES
 
 
 def run(*args) -> subprocess.CompletedProcess:
@@ -262,7 +262,7 @@ def test_every_command_help_names_its_schema_and_exit_statuses(capsys):
     writes (the SCHEMA constants and literal schema strings of the package), and the exit statuses are listed."""
     from alightsize.cli import COMMANDS
     written = set()
-    for f in (Path(__file__).resolve().parents[1] / "alightsize").rglob("*.py"):
+    for f in (ROOT / "alightsize").rglob("*.py"):
         if f.name != "cli.py":
             written |= set(re.findall(r"alightsize\.[a-z]+/\d+", f.read_text()))
     for name in COMMANDS:

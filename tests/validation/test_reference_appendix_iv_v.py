@@ -5,7 +5,6 @@ that our value must match and that the printed value must miss, so each record s
 
 from functools import lru_cache
 from math import log, pi, sqrt
-from pathlib import Path
 
 import pytest
 
@@ -13,11 +12,12 @@ from alightsize.checks.audit import run_audit
 from alightsize.pipeline.design import run_design
 from alightsize.pipeline.config import prepare, read_design
 from reference_data import CRITICAL, DESIGN_FACTORS, PRINTED_STRESSES, TABLES
+from conftest import ROOT
 
 LB = 0.45359237                 # kg
 LBF = LB * 9.80665              # N
 PSI = 6894.757293               # Pa
-EXAMPLES = Path(__file__).resolve().parent.parent / "examples" / "affdl-tr-66-33"
+EXAMPLES = ROOT / "examples" / "affdl-tr-66-33"
 FILES = {"012": "telescoping", "3457": "articulated_3457", "68": "articulated_68", "9": "articulated_9"}
 # Table 23 names its rows differently from the config's items.
 TABLE_23_LABELS = {"Lower Leg": "Lower Leg Tube", "Upper Leg": "Upper Leg Tube", "Lower Cap": "Lower Leg Cap",

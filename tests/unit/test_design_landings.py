@@ -114,7 +114,7 @@ def test_the_report_defines_every_landing_and_names_the_governing_one(design, re
 def test_landings_declared_as_load_cases_only_say_so_and_are_judged_on_the_checks_alone(tmp_path):
     """role = "load_cases": the same failing landings are reported, the page says plainly that they are load
     cases only, and the verdict is the checks' alone: the landings meet nothing they are asked to, and the only
-    failures are the two columns below Euler's range (tests/test_cli_audit.py, COLUMN_FAILURES), exit 1."""
+    failures are the two columns below Euler's range (tests/unit/test_cli_audit.py, COLUMN_FAILURES), exit 1."""
     import subprocess
     import sys
     shutil.copytree(EXAMPLES, tmp_path / "ex")

@@ -16,8 +16,8 @@ from alightsize.cli import main
 from alightsize.common.errors import InputError
 from alightsize.pipeline.config import prepare
 from alightsize.pipeline.design import run_design
+from conftest import ROOT
 
-ROOT = Path(__file__).resolve().parents[1]
 LUNAR = ROOT / "examples" / "lunar_lander.toml"
 FEW = {"samples = 100": "samples = 4"}           # the 16 envelope corners and 4 Monte Carlo landings
 
@@ -210,7 +210,7 @@ def test_cli_design_prints_a_one_screen_summary(tmp_path):
 @pytest.mark.parametrize("name", ["telescoping", "articulated_3457", "articulated_68", "articulated_9"])
 def test_1966_lander_files_reproduce_their_design_configs(name):
     """Each report configuration as a lander file gives exactly the design config's App. IV outcomes (every
-    factor, stress and allowable, to the bit) and App. V weights, which tests/test_reference_appendix_iv_v.py
+    factor, stress and allowable, to the bit) and App. V weights, which tests/validation/test_reference_appendix_iv_v.py
     asserts against the report. The landing cases are left out here: the printed App. IV loads are written
     out in both files, so no landing can change a check (test_crushing_force_change... covers the landings)."""
     from dataclasses import replace
