@@ -1,6 +1,7 @@
 """The drop-test comparison report (alightsize.reports.drop_report): printed Tables 6-13 read as printed, the simulated
 energy error against the drop energy, drops without a table, SI unit-suffixed JSON, escaping, and the shipped
-reports/affdl-tr-66-33/drops/ current. The landings are the ones tests/validation/test_drops.py runs (run_drop caches them)."""
+reports/affdl-tr-66-33/drops/ current. The landings are the ones tests/validation/test_drops.py runs (run_drop
+caches them)."""
 
 from __future__ import annotations
 
