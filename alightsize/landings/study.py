@@ -142,6 +142,12 @@ def _grid_points(grid: Node, scenes: dict) -> list[tuple]:
         values = grid.raw(k)
         if not isinstance(values, list) or not values:
             raise grid.error(k, "a non-empty array of values for this scene key", repr(values))
+        seen: dict[str, int] = {}
+        for i, v in enumerate(values):
+            first = seen.setdefault(json.dumps(v, sort_keys=True, default=str), i)
+            if first != i:
+                raise InputError(str(grid.file), f"grid.{json.dumps(k)}[{i}]",
+                                 f"distinct values (each grid point once; [{first}] is the same)", repr(v))
         axes.append(values)
     grid.finish()
     combos = list(itertools.product(chosen, *axes))

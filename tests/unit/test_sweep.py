@@ -372,3 +372,13 @@ def test_a_second_command_on_the_same_output_folder_is_refused(tmp_path, capsys)
     (out / "sub" / ".history.parquet.k3j.tmp").write_bytes(b"half")
     with output_folder(out):
         assert not (out / "sub" / ".history.parquet.k3j.tmp").exists()
+
+
+def test_a_repeated_grid_value_exits_2_naming_it(tmp_path, capsys):
+    """A grid value written twice would make the same landings twice: refused at its second place, naming the
+    first; nothing is run."""
+    path = _grid_study(tmp_path, ["0 deg", "5 deg", "0 deg"])
+    assert main(["sweep", str(path), "--out", str(tmp_path / "o"), "--serial"]) == 2
+    err = capsys.readouterr().err
+    assert f'{path}: grid."terrain.slope"[2]: expected distinct values' in err and "[0] is the same" in err
+    assert not (tmp_path / "o").exists()
