@@ -340,45 +340,10 @@ times its tolerances: errors below it are not resolved.</p>
 {% endfor %}</table>""").render(d=data, m=data["machine"])
 
 
-def _plot(data: dict, path: Path) -> None:
-    from matplotlib.figure import Figure
-    scenes = list(data["references"])
-    methods = sorted({c["method"] for c in data["cases"]})
-    ncol = min(3, len(scenes))
-    nrow = -(-len(scenes) // ncol)
-    fig = Figure(figsize=(4.2 * ncol, 3.4 * nrow + 0.8), layout="constrained")
-    axes = fig.subplots(nrow, ncol, squeeze=False)
-    for ax in axes.flat[len(scenes):]:
-        ax.set_axis_off()
-    for ax, scene in zip(axes.flat, scenes):
-        for k, method in enumerate(methods):
-            pts = [(c["err_peak_xdd3_rel"], c["wall_s"] * 1000 / c["t_sim_s"]) for c in data["cases"]
-                   if c["scene"] == scene and c["method"] == method]
-            if pts:
-                e, w = zip(*pts)
-                ax.loglog(np.maximum(e, 1e-16), w, "o-", color=f"C{k}", label=method)
-        ax.axvline(data["target_error"], color="grey", lw=0.8, ls=":")
-        lo, hi = ax.get_xlim()
-        unc = data["reference_uncertainty"][scene]["err_peak_xdd3_rel"]
-        if unc > lo:
-            ax.axvspan(lo, unc, color="grey", alpha=0.15, lw=0, label="below the reference's uncertainty")
-            ax.set_xlim(lo, hi)
-        ax.axhline(data["target_ms_per_simulated_s"][scene], color="grey", lw=0.8, ls=":")
-        ax.set_title(scene, fontsize=9)
-        ax.set_xlabel("relative error in peak XDD(3)")
-        ax.set_ylabel("wall ms per simulated second")
-        ax.grid(alpha=0.3, which="both")
-    handles = {}
-    for ax in axes.flat:
-        for h, label in zip(*ax.get_legend_handles_labels()):
-            handles.setdefault(label, h)
-    fig.legend(handles.values(), handles.keys(), loc="outside lower center", ncol=min(4, len(handles)), fontsize=8)
-    write_atomic(path, lambda tmp: fig.savefig(tmp, format="png", dpi=100, metadata={"Software": None}))
-
-
 def write_bench(data: dict, out: Path) -> list[Path]:
     out.mkdir(parents=True, exist_ok=True)
     files = [write_atomic(out / "bench.json", json.dumps(data, indent=2) + "\n")]
-    _plot(data, out / "work_precision.png")
+    from alightsize.common.figures import bench_figure, save_png
+    write_atomic(out / "work_precision.png", lambda tmp: save_png(bench_figure(data), tmp, 100))
     files += [out / "work_precision.png", write_atomic(out / "bench.html", _html(data))]
     return files

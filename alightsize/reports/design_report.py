@@ -14,17 +14,19 @@ from openpyxl import Workbook
 from openpyxl.styles import Font
 
 from alightsize import __version__
-from alightsize.checks.audit import failure_label
+from alightsize.common.figures import save_png
 from alightsize.common.trace import Step
 from alightsize.common.units import fmt, to_display, unit_label
-from alightsize.pipeline.design import CLOSEST_HEAD, DesignResult, criteria_counts, governing_cases, summary_json
+from alightsize.pipeline.design import CLOSEST_HEAD, DesignResult
 from alightsize.loads.quasi_static import TELESCOPING
-from alightsize.pipeline.landings import LANDING, landings_json, quasi_static_load
+from alightsize.pipeline.landings import LANDING
 from alightsize.reports.loads_report import context as loads_context
-from alightsize.reports.loads_report import heatmap, write_workbook as write_loads_workbook
-from alightsize.pipeline.plots import design_factor_figure, weight_figure
-from alightsize.reports.rendering import frame_sheet, save_workbook, template_env, text_cell
+from alightsize.reports.loads_report import heatmap, loads_json, write_workbook as write_loads_workbook
+from alightsize.reports.rendering import frame_sheet, json_records, save_workbook, template_env, text_cell
 from alightsize.common.atomic import write_atomic
+
+SCHEMA = "alightsize.design/1"
+AUDIT_SCHEMA = "alightsize.audit/1"
 
 
 _POWERED = re.compile(r"\{([^{}]+)\}(?=[²³⁴])")
@@ -94,7 +96,7 @@ def context(res) -> dict:
                "w_sized": fmt(s.weight_sized, "mass", system) if s.weight_sized else "",
                "saved": fmt(s.weight_printed - s.weight_sized, "mass", system)
                if s.weight_printed and s.weight_sized else ""} for s in res.sizings]
-    return {"loads": _loads_context(cfg, system), "references": _references(cfg, system),
+    return {"loads": _loads_context(res, system), "references": _references(cfg, system),
             "verdict": res.verdict(), "checks_ok": res.checks_ok, "landings": _landings(cfg, system),
             "headlines": res.headlines(system), "closest_head": CLOSEST_HEAD, "closest": [{"line": c.line(), "failed": c.margin.failed,
                                                       "anchor": _anchor(c.run_id) if c.run_id else None}
@@ -104,7 +106,7 @@ def context(res) -> dict:
             "per_leg": fmt(res.per_leg, "mass", system), "legs": cfg.legs, "total": fmt(total, "mass", system),
             "capsule": fmt(cfg.capsule_mass, "mass", system) if cfg.capsule_mass else "",
             "percent": f"{100 * total / cfg.capsule_mass:.2f}" if cfg.capsule_mass else "",
-            "failed": [failure_label(r) for r in res.records if not r.ok]}
+            "failed": [r.failure_label for r in res.records if not r.ok]}
 
 
 def _conditions(c: dict, system: str) -> str:
@@ -179,15 +181,16 @@ def _landings(cfg, system: str) -> dict | None:
     rows = list(landing_rows(cfg, system).values())
     return {"role": land.role, "study": land.study.name, "count": len(rows), "rows": rows,
             "criteria": "; ".join(limits) or "none given", "failing": len(land.failing),
-            "counts": criteria_counts(land.failing),
+            "counts": land.criteria_counts(),
             "outcomes": ", ".join(f"{k} {n}" for k, n in Counter(r["outcome"] for r in land.rows).most_common())}
 
 
-def _loads_context(cfg, system: str) -> dict | None:
+def _loads_context(res: DesignResult, system: str) -> dict | None:
+    cfg = res.config
     if cfg.loads is None:
         return None
     landed = cfg.landings is not None and cfg.loads.telescoping is not None and TELESCOPING in cfg.landings.envelopes
-    return loads_context(cfg.loads, system, governing_cases(cfg),
+    return loads_context(cfg.loads, system, res.governing_cases(),
                          cfg.landings.quasi_static.telescoping if landed else None)
 
 
@@ -213,7 +216,7 @@ def _references(cfg, system: str) -> list[dict]:
                "configuration": r.extreme.configuration if r.extreme else "", "quasi_static": None, "governs": "",
                "landing": None}
         if cfg.landings is not None and r.extreme is not None and r.envelope in cfg.landings.envelopes:
-            qs = quasi_static_load(cfg.landings, r.envelope, r.member, r.sense)
+            qs = cfg.landings.quasi_static_load(r.envelope, r.member, r.sense)
             row["quasi_static"] = fmt(qs * r.factor, "force", system) if qs is not None else "-"
             row["governs"] = "landing" if r.extreme.configuration.startswith(LANDING) else "quasi-static"
             row["landing"] = landings.get(r.extreme.configuration.removeprefix(LANDING))
@@ -269,7 +272,7 @@ def write_workbook(res, path: Path) -> None:
     if res.sizings:
         frame_sheet(wb, "Sizing", sizing_frame(res, system))
     if cfg.landings is not None:
-        frame_sheet(wb, "Landings", landings_frame(landings_json(cfg.landings), system))
+        frame_sheet(wb, "Landings", landings_frame(cfg.landings.cases(), system))
     save_workbook(wb, path)
 
 
@@ -290,7 +293,7 @@ def sizing_frame(res: DesignResult, system: str) -> pd.DataFrame:
 
 
 def landings_frame(rows: list[dict], system: str) -> pd.DataFrame:
-    """One row per landing case (`landings_json`): its conditions in the display units, outcome, criteria and peak
+    """One row per landing case (`Landings.cases`): its conditions in the display units, outcome, criteria and peak
     accelerations."""
     vu = unit_label("velocity", system)
     speed = lambda v: to_display(v, "velocity", system) if v is not None else None    # noqa: E731
@@ -308,7 +311,36 @@ def landings_frame(rows: list[dict], system: str) -> pd.DataFrame:
 
 
 def _png(fig, path: Path) -> None:
-    fig.savefig(path, format="png", dpi=90, metadata={"Software": None})   # no version stamp: same bytes
+    save_png(fig, path, 90)
+
+
+def audit_json(res: DesignResult) -> dict:
+    """The audit (alightsize.audit/1): the required factor, the verdict and every check (the "checks" table)."""
+    return {"schema": AUDIT_SCHEMA, "required_design_factor": res.config.required, "ok": all(r.ok for r in res.records),
+            "checks": json_records(res.to_pandas()["checks"])}
+
+
+def summary_json(res: DesignResult) -> dict:
+    """summary.json (alightsize.design/1, docs/contracts.md) from the result and its tables."""
+    cfg, tables = res.config, res.to_pandas()
+    total = res.per_leg * cfg.legs
+    items = tables["weights"][["item", "count_per_leg", "weight_each_kg"]]
+    out = {"schema": SCHEMA, "ok": res.ok, "configuration": cfg.configuration, "verdict": res.verdict(),
+           "checks_ok": res.checks_ok, "landings_ok": res.landings_ok,
+           "required_below_one": [{"item": n, "required_design_factor": f} for n, f in res.below_one],
+           "audit": {k: v for k, v in audit_json(res).items() if k != "schema"},
+           "weights": {cfg.configuration: {
+               "items": json_records(items), "per_leg_kg": res.per_leg, "legs": cfg.legs, "total_kg": total,
+               "capsule_kg": cfg.capsule_mass,
+               "fraction_of_capsule": total / cfg.capsule_mass if cfg.capsule_mass else None}}}
+    if cfg.loads is not None:
+        out["loads"] = {k: v for k, v in loads_json(cfg.loads).items() if k != "schema"}
+    if cfg.landings is not None:
+        out["landings"] = cfg.landings.cases()
+        out["landing_margins"] = [c.as_json() for c in cfg.landings.closest]
+    if "sizing" in tables:
+        out["sizing"] = json_records(tables["sizing"])
+    return out
 
 
 def write_design(res: DesignResult, out: Path) -> list[Path]:
@@ -319,8 +351,8 @@ def write_design(res: DesignResult, out: Path) -> list[Path]:
             write_atomic(out / "report.html", render_html(res)),
             write_atomic(out / "report.md", render_markdown(res)),
             write_atomic(out / "design.xlsx", lambda p: write_workbook(res, p)),
-            write_atomic(out / "design_factors.png", lambda p: _png(design_factor_figure(res), p)),
-            write_atomic(out / "weights.png", lambda p: _png(weight_figure(res), p))] + _loads_files(res, out)
+            write_atomic(out / "design_factors.png", lambda p: _png(res.plot("factors"), p)),
+            write_atomic(out / "weights.png", lambda p: _png(res.plot("weights"), p))] + _loads_files(res, out)
 
 
 def _loads_files(res: DesignResult, out: Path) -> list[Path]:
@@ -329,6 +361,6 @@ def _loads_files(res: DesignResult, out: Path) -> list[Path]:
     if loads is None:
         return []
     files = [write_atomic(out / "max_member_loads.xlsx", lambda p: write_loads_workbook(loads, p, system))]
-    for name in governing_cases(res.config):
+    for name in res.governing_cases():
         files.append(write_atomic(out / f"heatmap_{name}.png", lambda p, n=name: heatmap(loads, n, p, system)))
     return files

@@ -6,27 +6,24 @@ import json
 from math import degrees
 from pathlib import Path
 
-import numpy as np
-from matplotlib.figure import Figure
+import pandas as pd
 from openpyxl import Workbook
 from openpyxl.styles import Font
 
-from alightsize_sim.articulated_statics import MEMBERS
-
 from alightsize.common.atomic import write_atomic
-from alightsize.loads.envelopes import Extreme, member_fields
-from alightsize.loads.quasi_static import LoadsResult, loads_json
+from alightsize.common.figures import save_png
+from alightsize.loads.envelopes import MEMBER_LABELS, Extreme
+from alightsize.loads.quasi_static import LoadsResult
 from alightsize.common.units import fmt, to_display, unit_label
 from alightsize import __version__
 from alightsize.reports.rendering import save_workbook, template_env
 
-LABELS = {"PL1": "PL1, (PL3)", "PL2": "PL2, (PL6)", "PU1": "PU1, (PU2)", "R1213": "R12/13"}
-_META = {"Software": None}
+SCHEMA = "alightsize.loads/1"
 
 
 def label(member: str) -> str:
     """Member label as the tables print it (mirror-image members in parentheses)."""
-    return LABELS.get(member, member)
+    return MEMBER_LABELS.get(member, member)
 
 
 def _row(e: Extreme | None, system: str, with_config: bool) -> dict | None:
@@ -116,31 +113,33 @@ def write_workbook(res: LoadsResult, path: Path, system: str) -> None:
 
 
 def heatmap(res: LoadsResult, case_name: str, path: Path, system: str) -> None:
-    """Each member's load over alpha-beta at the psi of its largest magnitude."""
-    case = next(c for c in res.config.cases if c.name == case_name)
-    (psi, alpha, beta), fields = member_fields(case, res.config.grid)
-    fig = Figure(figsize=(17, 6.5), layout="constrained")
-    axes = fig.subplots(2, 5, sharex=True, sharey=True)
-    a, b = np.degrees(alpha), np.degrees(beta)
-    extent = (a[0], a[-1], b[0], b[-1])
-    bottomed = False
-    for ax, m in zip(axes.flat, MEMBERS):
-        f = to_display(np.asarray(fields[m]), "force", system)      # NaN where a cell has bottomed
-        k = int(np.unravel_index(np.nanargmax(np.abs(f)), f.shape)[0])
-        lim = float(np.nanmax(np.abs(f[k]))) or 1.0
-        bottomed |= bool(np.isnan(f[k]).any())
-        ax.set_facecolor("0.8")
-        im = ax.imshow(f[k].T, origin="lower", extent=extent, aspect="auto", cmap="RdBu_r", vmin=-lim, vmax=lim,
-                       interpolation="nearest")
-        ax.set_title(f"{label(m)} at psi = {np.degrees(psi[k]):+.0f} deg", fontsize=9)
-        fig.colorbar(im, ax=ax)
-    for ax in axes[1]:
-        ax.set_xlabel("alpha (deg)")
-    for ax in axes[:, 0]:
-        ax.set_ylabel("beta (deg)")
-    fig.suptitle(f"Configuration {case_name}: member loads, {unit_label('force', system)} (tension +), over alpha-beta "
-                 "at the governing psi" + ("; grey: a cell has bottomed" if bottomed else ""))
-    fig.savefig(path, format="png", dpi=72, metadata=_META)
+    """The heat map of configuration `case_name` (LoadsResult.plot) as a PNG."""
+    save_png(res.plot(case_name, system), path, 72)
+
+
+def _extreme_json(row: pd.Series, key: str, combined: bool) -> dict:
+    if pd.isna(row[f"{key}_N"]):
+        return {f"{key}_N": None, f"{key}_at_deg": None}
+    out = {f"{key}_N": float(row[f"{key}_N"]),
+           f"{key}_at_deg": [float(row[f"{key}_{ax}_deg"]) for ax in ("alpha", "beta", "psi")]}
+    if combined:
+        out[f"{key}_configuration"] = row[f"{key}_configuration"]
+    return out
+
+
+def loads_json(res: LoadsResult) -> dict:
+    """max_member_loads.json (docs/contracts.md, alightsize.loads/1) from the result's tables."""
+    tables = res.to_pandas()
+    confs: dict[str, list] = {}
+    for _, r in tables["envelopes"].iterrows():
+        confs.setdefault(r["envelope"], []).append({"member": r["member"],
+                                                    **_extreme_json(r, "tension", r["combined"]),
+                                                    **_extreme_json(r, "compression", r["combined"])})
+    out = {"schema": SCHEMA, "title": res.config.title, "configurations": confs,
+           "combined": {k: list(v) for k, v in res.combined.items()}}
+    if "telescoping" in tables:
+        out["telescoping"] = {k: float(v) for k, v in tables["telescoping"].iloc[0].items()}
+    return out
 
 
 def write_loads(res: LoadsResult, out: Path, system: str | None = None) -> list[Path]:

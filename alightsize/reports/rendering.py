@@ -44,6 +44,18 @@ def template_env(autoescape: bool) -> jinja2.Environment:
     return env
 
 
+def json_value(value):
+    """A table cell as JSON holds it: NaN and None as null, numpy scalars as Python numbers."""
+    if isinstance(value, np.generic):
+        value = value.item()
+    return None if isinstance(value, float) and not np.isfinite(value) else value
+
+
+def json_records(frame: pd.DataFrame) -> list[dict]:
+    """A table as a JSON list of objects, one per row, column names as keys."""
+    return [{k: json_value(v) for k, v in row.items()} for row in frame.to_dict("records")]
+
+
 def text_cell(cell, value) -> None:
     """Put user text in a cell as text, never as a formula."""
     cell.value = value

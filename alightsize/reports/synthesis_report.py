@@ -16,7 +16,7 @@ from alightsize.common.atomic import write_atomic
 from alightsize.common.units import registry
 from alightsize.reports.design_report import _png, write_design
 from alightsize.reports.rendering import save_workbook, template_env, text_cell
-from alightsize.synthesis.search import SynthesisResult, convergence
+from alightsize.synthesis.search import SynthesisResult
 
 SCHEMA = "alightsize.synthesis/1"
 
@@ -97,7 +97,7 @@ def document(res: SynthesisResult) -> dict:
         "search_rates": [r.as_json() for r in res.rates], "start_rates": [r.as_json() for r in res.start_rates],
         "check": {"samples": len(res.check_rows), "seed": res.spec.check_seed,
                   "rates": [r.as_json() for r in res.check_rates]},
-        "convergence": convergence(res.history),
+        "convergence": res.convergence(),
         "trade": {axis: [{f"limit_{'rad' if axis == 'slope' else 'm_s'}": p.value, "label": p.label,
                           "feasible": p.best.feasible, "weight_fraction": p.best.fraction, "x_si": list(p.best.x)}
                          for p in pts] for axis, pts in res.trade.items()},
@@ -139,7 +139,7 @@ def _context(res: SynthesisResult) -> dict:
         "criteria": [{"start": _rate(a), "chosen": _rate(b), "check": _rate(c)}
                      for a, b, c in zip(res.start_rates, res.rates, res.check_rates or res.rates)],
         "check_samples": len(res.check_rows), "check_seed": res.spec.check_seed,
-        "members": _members(res), "convergence": convergence(res.history),
+        "members": _members(res), "convergence": res.convergence(),
         "bounding": bounding(res),
         "trade": {axis: [{"label": _trade_label(axis, p.value), "feasible": p.best.feasible,
                           "weight": _pct(p.best.fraction) if p.best.feasible else "no feasible design",
