@@ -156,7 +156,8 @@ def _synthesize(args, stage: Stage) -> int:
 
 
 def _bench(args, stage: Stage) -> int:
-    from alightsize.landings.bench import run_bench, write_bench
+    from alightsize.landings.bench import run_bench
+    from alightsize.reports.bench_report import write_bench
     data = run_bench(quick=args.quick, progress=lambda msg: print(msg, flush=True), only=tuple(args.scene or ()))
     files = write_bench(data, stage.path)
     print(_wrote(stage, files))

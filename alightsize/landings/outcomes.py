@@ -13,7 +13,6 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from alightsize import __version__
 from alightsize.common.units import registry
 from alightsize.landings.criteria import violation_kinds
 from alightsize.landings.probability import wilson_interval
@@ -107,10 +106,11 @@ def plot_axes(study: Study, rows: list[dict]) -> tuple[str, str] | None:
 
 
 def outcomes_json(study: Study, rows: list[dict]) -> dict:
-    """outcomes.json content (alightsize.sweep/1) from the stored rows of this study's runs."""
+    """outcomes.json content (alightsize.sweep/1) from the stored rows of this study's runs, but for the
+    `version` of the program that writes it (the report's)."""
     done = [r for r in rows if r["status"] == "done"]
     n = len(done)
-    doc = {"schema": SCHEMA, "study": study.name, "title": study.title, "seed": study.seed, "version": __version__,
+    doc = {"schema": SCHEMA, "study": study.name, "title": study.title, "seed": study.seed,
            "runs": len(study.runs), "stored": len(rows), "done": n,
            "failed": [r["run_id"] for r in rows if r["status"] == "failed" or r.get("outcome") == "failed"],
            "outcomes": _proportions([r["outcome"] for r in done], n, OUTCOMES),
@@ -181,7 +181,7 @@ class SweepResult:
 
     @cached_property
     def document(self) -> dict:
-        """outcomes.json (alightsize.sweep/1, docs/contracts.md)."""
+        """outcomes.json (alightsize.sweep/1, docs/contracts.md) without the writer's `version`."""
         return outcomes_json(self.study, self.rows)
 
     def plot_axes(self) -> tuple[str, str] | None:

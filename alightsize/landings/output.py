@@ -170,9 +170,6 @@ def history_frame(cfg: SceneConfig, res: Result) -> pd.DataFrame:
     return df
 
 
-PLOTS = ("xdd", "omd", "strokes", "energy", "footprints", "srs_xdd3")    # LandingResult.plot kinds
-
-
 @dataclass(frozen=True)
 class LandingResult:
     """One landing of a scene: the scene as read, the simulator's Result, and what alightsize reads from them."""

@@ -48,7 +48,10 @@ class LoadsResult:
                             **{f"{key}_{ax}_deg": v for ax, v in zip(("alpha", "beta", "psi"), at)},
                             f"{key}_configuration": e.configuration if e is not None else None}
                 rows.append(row)
-        out = {"envelopes": pd.DataFrame(rows)}
+        columns = ["envelope", "combined", "member"] + [
+            f"{key}_{field}" for key in ("tension", "compression")
+            for field in ("N", "alpha_deg", "beta_deg", "psi_deg", "configuration")]
+        out = {"envelopes": pd.DataFrame(rows, columns=columns)}
         if self.telescoping is not None:
             t = self.telescoping
             out["telescoping"] = pd.DataFrame([{**{f"{k}_N": t[k] for k in TELESCOPING_FORCES},

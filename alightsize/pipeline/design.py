@@ -15,6 +15,10 @@ from alightsize.landings.criteria import violation_kinds
 from alightsize.pipeline.config import DesignConfig, DesignSpec, prepare
 from alightsize.pipeline.items import Item
 
+CHECK_COLUMNS = ["configuration", "item", "check", "kind", "load_N", "stress_Pa", "allowable_Pa", "design_factor",
+                 "required_design_factor", "margin_of_safety", "ok", "ok_as_stated"]     # CheckRecord.as_json
+
+
 @dataclass(frozen=True)
 class WeightRow:
     label: str
@@ -140,9 +144,10 @@ class DesignResult:
         """The result as tables, SI with the unit in each column name: "checks" (one row per check, with f,
         MS and verdict; None where f is infinite), "weights" (per item), with landing cases "landings" (one row per
         landing as stored) and with sized items "sizing" (one row per sized item)."""
-        checks = pd.DataFrame([r.as_json() for r in self.records])
+        checks = pd.DataFrame([r.as_json() for r in self.records], columns=CHECK_COLUMNS)
         weights = pd.DataFrame([{"item": w.label, "count_per_leg": w.count, "weight_each_kg": w.each,
-                                 "weight_per_leg_kg": w.count * w.each} for w in self.weights])
+                                 "weight_per_leg_kg": w.count * w.each} for w in self.weights],
+                               columns=["item", "count_per_leg", "weight_each_kg", "weight_per_leg_kg"])
         out = {"checks": checks, "weights": weights}
         if self.config.landings is not None:
             out["landings"] = pd.DataFrame(self.config.landings.rows)

@@ -11,7 +11,6 @@ from pathlib import Path
 
 import pandas as pd
 from openpyxl import Workbook
-from openpyxl.styles import Font
 
 from alightsize import __version__
 from alightsize.common.figures import save_png
@@ -22,7 +21,7 @@ from alightsize.loads.quasi_static import TELESCOPING
 from alightsize.pipeline.landings import LANDING
 from alightsize.reports.loads_report import context as loads_context
 from alightsize.reports.loads_report import heatmap, loads_json, write_workbook as write_loads_workbook
-from alightsize.reports.rendering import frame_sheet, json_records, save_workbook, template_env, text_cell
+from alightsize.reports.rendering import frame_sheet, json_records, save_workbook, template_env
 from alightsize.common.atomic import write_atomic
 
 SCHEMA = "alightsize.design/1"
@@ -233,63 +232,68 @@ def render_markdown(res) -> str:
 
 
 def write_workbook(res, path: Path) -> None:
-    """Stress sheet and weight sheet, values in the display units, numbers as numbers."""
-    cfg, system = res.config, res.config.units
+    """Stress sheet and weight sheet (and with them Sizing and Landings), values in the display units, numbers as
+    numbers, user text as text."""
+    system = res.config.units
     wb = Workbook()
-    ws = wb.active
-    ws.title = "Stress"
-    su = unit_label("stress", system)
-    head = ["Item", "Count per leg", "Material", "Check", "Failure mode", f"Stress ({su})", f"Allowable ({su})",
-            "Design factor", "Required", "Margin of safety", "OK"]
-    ws.append(head)
-    for r in res.records:
-        o = r.outcome
-        row = [None, r.item.count, None, r.item.checks[r.index].kind, o.mode,
-               round(to_display(o.stress, "stress", system), 1) if o.stress is not None else None,
-               round(to_display(o.allowable, "stress", system), 1) if o.allowable is not None else None,
-               round(o.factor, 4) if isfinite(o.factor) else None, r.required,
-               round(r.margin, 4) if isfinite(r.margin) else None, "yes" if r.ok else "NO"]
-        ws.append(row)
-        text_cell(ws.cell(ws.max_row, 1), r.item.name)
-        text_cell(ws.cell(ws.max_row, 3), r.item.material.name)
-    wu = unit_label("mass", system)
-    wsw = wb.create_sheet("Weights")
-    wsw.append(["Item", "Count per leg", f"Weight each ({wu})", f"Weight per leg ({wu})"])
-    for w in res.weights:
-        each = round(to_display(w.each, "mass", system), 4)
-        wsw.append([None, w.count, each, round(each * w.count, 4)])
-        text_cell(wsw.cell(wsw.max_row, 1), w.label)
-    per_leg = to_display(res.per_leg, "mass", system)
-    wsw.append(["Total each leg", None, None, round(per_leg, 4)])
-    wsw.append([f"Total {cfg.legs} legs", None, None, round(per_leg * cfg.legs, 4)])
-    if cfg.capsule_mass:
-        wsw.append(["Percent of capsule", None, None, round(100 * res.per_leg * cfg.legs / cfg.capsule_mass, 3)])
-    for sheet in (ws, wsw):
-        for c in sheet[1]:
-            c.font = Font(bold=True)
-        for col in sheet.columns:
-            sheet.column_dimensions[col[0].column_letter].width = max(12, max(len(str(c.value or "")) for c in col) + 2)
+    wb.remove(wb.active)
+    frame_sheet(wb, "Stress", stress_frame(res, system))
+    frame_sheet(wb, "Weights", weights_frame(res, system))
     if res.sizings:
         frame_sheet(wb, "Sizing", sizing_frame(res, system))
-    if cfg.landings is not None:
-        frame_sheet(wb, "Landings", landings_frame(cfg.landings.cases(), system))
+    if res.config.landings is not None:
+        frame_sheet(wb, "Landings", landings_frame(res.config.landings.cases(), system))
     save_workbook(wb, path)
 
 
+def stress_frame(res: DesignResult, system: str) -> pd.DataFrame:
+    """One row per check (the "checks" table): stress and allowable in the display unit to 0.1, f and MS to 4
+    places (empty where infinite)."""
+    checks, su = res.to_pandas()["checks"], unit_label("stress", system)
+
+    def stress(col: str) -> list:
+        return [round(to_display(v, "stress", system), 1) if pd.notna(v) else None for v in checks[col]]
+
+    def four(col: str) -> list:
+        return [round(v, 4) if pd.notna(v) else None for v in checks[col]]
+    return pd.DataFrame({"Item": checks["item"], "Count per leg": [r.item.count for r in res.records],
+                         "Material": [r.item.material.name for r in res.records], "Check": checks["kind"],
+                         "Failure mode": checks["check"], f"Stress ({su})": stress("stress_Pa"),
+                         f"Allowable ({su})": stress("allowable_Pa"), "Design factor": four("design_factor"),
+                         "Required": checks["required_design_factor"], "Margin of safety": four("margin_of_safety"),
+                         "OK": ["yes" if ok else "NO" for ok in checks["ok"]]}, dtype=object)
+
+
+def weights_frame(res: DesignResult, system: str) -> pd.DataFrame:
+    """One row per weight entry (the "weights" table) in the display unit, then the totals per leg, for all legs
+    and as a percentage of the capsule."""
+    cfg, weights, wu = res.config, res.to_pandas()["weights"], unit_label("mass", system)
+    rows = []
+    for w in weights.to_dict("records"):
+        each = round(to_display(w["weight_each_kg"], "mass", system), 4)
+        rows.append([w["item"], w["count_per_leg"], each, round(each * w["count_per_leg"], 4)])
+    per_leg = to_display(res.per_leg, "mass", system)
+    rows += [["Total each leg", None, None, round(per_leg, 4)],
+             [f"Total {cfg.legs} legs", None, None, round(per_leg * cfg.legs, 4)]]
+    if cfg.capsule_mass:
+        rows.append(["Percent of capsule", None, None, round(100 * res.per_leg * cfg.legs / cfg.capsule_mass, 3)])
+    return pd.DataFrame(rows, columns=["Item", "Count per leg", f"Weight each ({wu})", f"Weight per leg ({wu})"],
+                        dtype=object)
+
+
 def sizing_frame(res: DesignResult, system: str) -> pd.DataFrame:
-    """One row per sized item, lengths and weights in the display units."""
+    """One row per sized item (the "sizing" table), lengths and weights in the display units."""
+    t = res.to_pandas()["sizing"]
     lu, wu = unit_label("length", system), unit_label("mass", system)
-    length, mass = (lambda v: to_display(v, "length", system)), (lambda v: to_display(v, "mass", system) if v else None)
-    return pd.DataFrame({"Item": [s.item for s in res.sizings],
-                         "Dimension": [s.dimension.replace("_", " ") for s in res.sizings],
-                         f"Printed ({lu})": [length(s.printed) for s in res.sizings],
-                         f"Sized ({lu})": [length(s.sized) for s in res.sizings],
-                         "f printed": [s.factor_printed for s in res.sizings],
-                         "f sized": [s.factor_sized for s in res.sizings],
-                         f"Weight printed ({wu})": [mass(s.weight_printed) for s in res.sizings],
-                         f"Weight sized ({wu})": [mass(s.weight_sized) for s in res.sizings],
-                         "Meets the required factor": ["yes" if s.feasible else "NO" for s in res.sizings],
-                         "At an end of its range": ["yes" if s.at_bound else "" for s in res.sizings]})
+    length = lambda v: to_display(v, "length", system)                                    # noqa: E731
+    mass = lambda v: to_display(v, "mass", system) if pd.notna(v) and v else None          # noqa: E731
+    return pd.DataFrame({"Item": t["item"], "Dimension": t["dimension"].str.replace("_", " "),
+                         f"Printed ({lu})": t["printed_m"].map(length), f"Sized ({lu})": t["sized_m"].map(length),
+                         "f printed": t["design_factor_printed"], "f sized": t["design_factor_sized"],
+                         f"Weight printed ({wu})": t["weight_printed_kg"].map(mass),
+                         f"Weight sized ({wu})": t["weight_sized_kg"].map(mass),
+                         "Meets the required factor": ["yes" if ok else "NO" for ok in t["feasible"]],
+                         "At an end of its range": ["yes" if b else "" for b in t["at_bound"]]})
 
 
 def landings_frame(rows: list[dict], system: str) -> pd.DataFrame:

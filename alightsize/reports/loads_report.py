@@ -8,7 +8,6 @@ from pathlib import Path
 
 import pandas as pd
 from openpyxl import Workbook
-from openpyxl.styles import Font
 
 from alightsize.common.atomic import write_atomic
 from alightsize.common.figures import save_png
@@ -16,7 +15,7 @@ from alightsize.loads.envelopes import MEMBER_LABELS, Extreme
 from alightsize.loads.quasi_static import LoadsResult
 from alightsize.common.units import fmt, to_display, unit_label
 from alightsize import __version__
-from alightsize.reports.rendering import save_workbook, template_env
+from alightsize.reports.rendering import frame_sheet, save_workbook, template_env
 
 SCHEMA = "alightsize.loads/1"
 
@@ -80,35 +79,34 @@ def context(res: LoadsResult, system: str, heatmaps: list[str] | None = None,
             "heatmaps": [f"heatmap_{n}.png" for n in names]}
 
 
+def envelope_frame(table: dict, system: str) -> pd.DataFrame:
+    """One envelope of `tables` as the workbook shows it: a row per member and sense, the member named on its
+    first row, the load in the display unit, alpha, beta, psi in degrees (and the configuration of a
+    combination)."""
+    rows = []
+    for r in table["rows"]:
+        for k, sense in enumerate(("tension", "compression")):
+            e = r[sense]
+            if e is not None:
+                rows.append([r["member"] if k == 0 or r["tension"] is None else "", round(e["load"]),
+                             float(e["alpha"]), float(e["beta"]), float(e["psi"])]
+                            + ([e["configuration"]] if table["combined"] else []))
+    return pd.DataFrame(rows, dtype=object, columns=["Member", f"Load ({unit_label('force', system)})", "alpha (deg)",
+                                                     "beta (deg)", "psi (deg)"]
+                        + (["Configuration"] if table["combined"] else []))
+
+
 def write_workbook(res: LoadsResult, path: Path, system: str) -> None:
-    """One sheet per configuration and per combination, laid out like Tables 14-22; user text is always a
-    string cell (never a formula)."""
+    """One sheet per configuration and per combination, laid out like Tables 14-22, and the telescoping free
+    body; user text is always a string cell (never a formula)."""
     wb = Workbook()
     wb.remove(wb.active)
-    unit = unit_label("force", system)
     for t in tables(res, system):
-        ws = wb.create_sheet(t["name"])
-        ws.append([t["title"]])
-        ws["A1"].font = Font(bold=True)
-        ws.append(["Member", f"Load ({unit})", "alpha (deg)", "beta (deg)", "psi (deg)"]
-                  + (["Configuration"] if t["combined"] else []))
-        for r in t["rows"]:
-            for k, sense in enumerate(("tension", "compression")):
-                e = r[sense]
-                if e is None:
-                    continue
-                row = [r["member"] if k == 0 or r["tension"] is None else "", round(e["load"]), float(e["alpha"]),
-                       float(e["beta"]), float(e["psi"])] + ([e["configuration"]] if t["combined"] else [])
-                ws.append(row)
-                for c in ws[ws.max_row]:
-                    if isinstance(c.value, str):
-                        c.data_type = "s"
+        frame_sheet(wb, t["name"], envelope_frame(t, system), t["title"])
     if res.telescoping is not None:
-        ws = wb.create_sheet("telescoping")
-        ws.append(["Telescoping leg free body (App. III)"])
-        ws.append(["Load", "Value", "Unit"])
-        for r in telescoping_rows(res, system):
-            ws.append([r["name"], round(r["number"], 3), r["unit"]])
+        free_body = pd.DataFrame([[r["name"], round(r["number"], 3), r["unit"]] for r in telescoping_rows(res, system)],
+                                 columns=["Load", "Value", "Unit"], dtype=object)
+        frame_sheet(wb, "telescoping", free_body, "Telescoping leg free body (App. III)")
     save_workbook(wb, path)
 
 

@@ -8,14 +8,14 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import pandas as pd
 from openpyxl import Workbook
-from openpyxl.styles import Font
 
 from alightsize import __version__
 from alightsize.common.atomic import write_atomic
 from alightsize.common.figures import save_png
 from alightsize.landings.outcomes import MEANING, SYMBOL, SweepResult
-from alightsize.reports.rendering import save_workbook, template_env, text_cell
+from alightsize.reports.rendering import frame_sheet, save_workbook, template_env
 from alightsize.landings.study import Study
 
 
@@ -30,37 +30,24 @@ def matrix_legend(doc: dict) -> list[str]:
     return [f"{symbol} {' / '.join(words)}" for symbol, words in by_symbol.items()]
 
 
-def _put(sheet, row: int, values: list) -> None:
-    """One row of cells at a known row number (ws.max_row is a scan: quadratic over thousands of runs)."""
-    for j, v in enumerate(values):
-        text_cell(sheet.cell(row, j + 1), v)
-
-
-def write_workbook(doc: dict, rows: list[dict], path: Path) -> Path:
+def write_workbook(res: SweepResult, path: Path) -> Path:
     """Runs, outcome statistics and the outcome matrix; text cells never become formulas."""
     wb = Workbook()
-    ws = wb.active
-    ws.title = "Runs"
-    names = sorted({k for r in rows for k in r}, key=lambda k: (k not in ("run_id", "scene", "status", "outcome",
-                                                                         "outcome_class"), k))
-    _put(ws, 1, names)
-    for i, r in enumerate(rows):
-        _put(ws, i + 2, [r.get(k) for k in names])
-    st = wb.create_sheet("Outcomes")
-    _put(st, 1, ["outcome", "runs", "probability", "95 % low", "95 % high"])
-    for i, (k, v) in enumerate(doc["outcome_classes"].items()):
-        _put(st, i + 2, [k, v["count"], v["probability"], *v["ci95"]])
+    wb.remove(wb.active)
+    tables, doc = res.to_pandas(), res.document
+    runs = tables["runs"]
+    first = ("run_id", "scene", "status", "outcome", "outcome_class")
+    frame_sheet(wb, "Runs", runs[sorted(runs.columns, key=lambda k: (k not in first, k))].astype(object))
+    frame_sheet(wb, "Outcomes", tables["outcomes"].set_axis(["outcome", "runs", "probability", "95 % low", "95 % high"],
+                                                            axis=1))
     mat = doc["matrix"]
     if mat:
-        sm = wb.create_sheet("Matrix")
-        _put(sm, 1, mat["rows"] + [f"{mat['column']} {c}" for c in mat["columns"]])
-        for i, cell in enumerate(mat["cells"]):
-            marks = [cell["values"].get(c) for c in mat["columns"]]
-            _put(sm, i + 2, cell["row"] + ["" if v is None else v["symbol"] + (
-                "" if v["agrees"] in (None, True) else f" ({v['reference']})") for v in marks])
-    for sheet in wb.worksheets:
-        for c in sheet[1]:
-            c.font = Font(bold=True)
+        marks = [[cell["values"].get(c) for c in mat["columns"]] for cell in mat["cells"]]
+        frame_sheet(wb, "Matrix", pd.DataFrame(
+            [cell["row"] + ["" if v is None else v["symbol"] + ("" if v["agrees"] in (None, True)
+                                                                 else f" ({v['reference']})") for v in row]
+             for cell, row in zip(mat["cells"], marks)],
+            columns=mat["rows"] + [f"{mat['column']} {c}" for c in mat["columns"]], dtype=object))
     write_atomic(path, lambda p: save_workbook(wb, p))
     return path
 
@@ -70,9 +57,13 @@ def write_results(study: Study, out: Path, reports: Path | None = None) -> list[
     stored in out/runs.sqlite."""
     res = SweepResult.load(study, out)
     folder = reports or out
-    doc, rows = res.document, res.rows
+    doc = {}
+    for k, v in res.document.items():                  # the writer's version after the seed, as the schema lists it
+        doc[k] = v
+        if k == "seed":
+            doc["version"] = __version__
     files = [write_atomic(folder / "outcomes.json", json.dumps(doc, indent=1, default=str) + "\n"),
-             write_workbook(doc, rows, folder / "outcomes.xlsx")]
+             write_workbook(res, folder / "outcomes.xlsx")]
     plots = []
     if res.plot_axes():
         plots.append("boundary.png")

@@ -15,7 +15,7 @@ from alightsize import __version__
 from alightsize.common.atomic import write_atomic
 from alightsize.common.units import registry
 from alightsize.reports.design_report import _png, write_design
-from alightsize.reports.rendering import save_workbook, template_env, text_cell
+from alightsize.reports.rendering import frame_sheet, save_workbook, template_env
 from alightsize.synthesis.search import SynthesisResult
 
 SCHEMA = "alightsize.synthesis/1"
@@ -156,17 +156,11 @@ def plot_names(res: SynthesisResult) -> list[str]:
 
 
 def write_workbook(res: SynthesisResult, path: Path) -> None:
+    """One sheet per table of the result (`to_pandas`)."""
     wb = Workbook()
     wb.remove(wb.active)
     for name, frame in res.to_pandas().items():
-        ws = wb.create_sheet(name)
-        for j, col in enumerate(frame.columns, start=1):
-            text_cell(ws.cell(1, j), str(col))
-        for i, row in enumerate(frame.itertuples(index=False), start=2):
-            for j, v in enumerate(row, start=1):
-                if isinstance(v, float) and not isfinite(v):
-                    v = None                               # pandas' NaN for a value that does not exist
-                text_cell(ws.cell(i, j), v if not isinstance(v, (list, dict, tuple)) else json.dumps(v))
+        frame_sheet(wb, name, frame)
     save_workbook(wb, path)
 
 
