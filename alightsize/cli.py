@@ -39,18 +39,19 @@ def _design(args, stage: Stage) -> int:
 
 def _audit(args) -> int:
     from alightsize.common.atomic import write_atomic
-    from alightsize.checks.audit import audit_json, audit_table, failure_label, junit_xml
+    from alightsize.checks.audit import audit_table, junit_xml
     from alightsize.pipeline.design import audit, below_one_line
     from alightsize.pipeline.lander import read_input
+    from alightsize.reports.design_report import audit_json
     res = audit(read_input(args.config))                # every section as written: sizing is `design`'s
     print(audit_table(res.records))
-    print("OK" if res.checks_ok else "FAILED: " + ", ".join(failure_label(r) for r in res.records if not r.ok))
+    print("OK" if res.checks_ok else "FAILED: " + ", ".join(r.failure_label for r in res.records if not r.ok))
     if res.below_one:
         print("note: " + below_one_line(res.below_one))
     if not res.landings_ok:                            # the audit judges design factors; say what else fails
         print(f"note: the design fails beyond its design factors ({res.verdict()}); see alightsize design")
     if args.json:
-        write_atomic(args.json, json.dumps(audit_json(res.config, res.records), indent=2) + "\n")
+        write_atomic(args.json, json.dumps(audit_json(res), indent=2) + "\n")
     if args.junit:
         write_atomic(args.junit, junit_xml(res.config, res.records))
     return 0 if res.checks_ok else 1
@@ -74,13 +75,13 @@ def _loads(args, stage: Stage) -> int:
 
 
 def _simulate(args, stage: Stage) -> int:
-    from alightsize.landings.output import summary, write_landing
+    from alightsize.landings.output import land
     from alightsize.model.scene_config import read_scene
-    from alightsize_sim.landing import simulate
+    from alightsize.reports.landing_report import write_landing
     cfg = read_scene(args.scene)
-    res = simulate(cfg.scene, cfg.controls)
-    files = write_landing(cfg, res, stage.path)
-    s = summary(cfg, res)
+    landing = land(cfg)
+    res, s = landing.result, landing.summary
+    files = write_landing(landing, stage.path)
     print(f"{cfg.name}: {s['outcome']} at {s['t_end_s']:.4f} s ({s['reason']}); "
           f"peak XDD(3) {s['peak']['xdd_g'][2]:.2f} g; "
           f"energy closure {s['energy']['closure_rel']:.2e}; {res.steps} steps, {res.rhs_evals} evaluations, "
@@ -155,7 +156,8 @@ def _synthesize(args, stage: Stage) -> int:
 
 
 def _bench(args, stage: Stage) -> int:
-    from alightsize.landings.bench import run_bench, write_bench
+    from alightsize.landings.bench import run_bench
+    from alightsize.reports.bench_report import write_bench
     data = run_bench(quick=args.quick, progress=lambda msg: print(msg, flush=True), only=tuple(args.scene or ()))
     files = write_bench(data, stage.path)
     print(_wrote(stage, files))

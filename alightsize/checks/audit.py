@@ -13,7 +13,6 @@ if TYPE_CHECKING:                               # it reads a design's items; it 
     from alightsize.pipeline.items import Item
     from alightsize.pipeline.config import DesignConfig
 
-SCHEMA = "alightsize.audit/1"
 
 
 @dataclass(frozen=True)
@@ -66,6 +65,12 @@ class CheckRecord:
         text = f"{f:.{2 if self.decimals is None else self.decimals}f}"
         return f"{text} (exact {f:.4f})" if self.rounding_flips else text
 
+    @property
+    def failure_label(self) -> str:
+        """"Item / kind", with a note when the stated (rounded) factor would read as a pass."""
+        label = f"{self.item.name} / {self.item.checks[self.index].kind}"
+        return f"{label} (f = {self.stated_factor}: passes only as rounded)" if self.rounding_flips else label
+
     def as_json(self) -> dict:
         o = self.outcome
         return {"configuration": self.configuration, "item": self.item.name, "check": o.mode,
@@ -84,17 +89,6 @@ def passes(factor: float, required: float) -> bool:
 def run_audit(cfg: DesignConfig, items: tuple[Item, ...] | None = None) -> list[CheckRecord]:
     return [CheckRecord(cfg.configuration, item, j, o, item.required, cfg.decimals)
             for item in items or cfg.items for j, o in enumerate(item.evaluate())]
-
-
-def failure_label(r: CheckRecord) -> str:
-    """"Item / kind", with a note when the stated (rounded) factor would read as a pass."""
-    label = f"{r.item.name} / {r.item.checks[r.index].kind}"
-    return f"{label} (f = {r.stated_factor}: passes only as rounded)" if r.rounding_flips else label
-
-
-def audit_json(cfg: DesignConfig, records: list[CheckRecord]) -> dict:
-    return {"schema": SCHEMA, "required_design_factor": cfg.required, "ok": all(r.ok for r in records),
-            "checks": [r.as_json() for r in records]}
 
 
 def audit_table(records: list[CheckRecord]) -> str:

@@ -1,7 +1,7 @@
 """Speed against error of the landing simulator (`alightsize bench`): each scene with each method over a
 ladder of tolerances or steps, errors against a tight-tolerance reference, and the same equations under
 scipy.integrate (RK45, DOP853 stepped one accepted step at a time, memory committed between steps, events
-located on their dense output) as the baseline a user would write. JSON, HTML and a work-precision plot."""
+located on their dense output) as the baseline a user would write (written by alightsize.reports.bench_report)."""
 
 from __future__ import annotations
 
@@ -12,7 +12,6 @@ import platform
 import subprocess
 import sys
 import time
-from pathlib import Path
 
 import numpy as np
 from scipy import integrate, optimize
@@ -22,7 +21,6 @@ from alightsize_sim.articulated_leg import ArticulatedLeg
 from alightsize_sim.footpad_mass import ground_event
 from alightsize_sim.landing import Controls, Result, _Run, accel_g, initial_state, simulate
 
-from alightsize.common.atomic import write_atomic
 from alightsize.common.errors import InputError
 from alightsize.common.resources import data_dir
 from alightsize.model.scene_config import SceneConfig, read_scene
@@ -291,94 +289,3 @@ def run_bench(quick: bool = False, progress=print, only: tuple[str, ...] = ()) -
             "reference_uncertainty": uncertainty, "target_error": TARGET_ERROR,
             "target_ms_per_simulated_s": goal, "cases": cases,
             "targets": _targets(cases)}
-
-
-def _setting_text(kw: dict) -> str:
-    """Solver controls as words: 'rtol 1e-11, atol 1e-14, max_step 0.0005, event_tol 1e-09'."""
-    return ", ".join(f"{k} {v:g}" for k, v in kw.items())
-
-
-def _html(data: dict) -> str:
-    from jinja2 import Environment, select_autoescape
-    env = Environment(autoescape=select_autoescape(default=True))
-    env.filters["setting"] = _setting_text
-    return env.from_string("""<!doctype html><meta charset="utf-8"><title>alightsize bench</title>
-<style>body{font-family:sans-serif;max-width:75em;margin:1em auto;padding:0 1em} img{max-width:100%;height:auto}
-table{border-collapse:collapse;font-size:90%} td,th{border:1px solid #bbb;padding:2px 6px}
-td.num{text-align:right}</style>
-<h1>Landing simulator: speed against error</h1>
-<p>{{ m.cores }} cores, Python {{ m.python }}, numpy {{ m.numpy }}, numba {{ m.numba }}. Compiled code loaded in
-{{ '%.2f' % d.compile_or_cache_load_s }} s (excluded below). Every case, compiled or not, is run once untimed and then
-timed {{ d.cases[0].repeats }} times: wall is the median, with the least and largest in brackets. Errors are against
-a reference run of the same scene:</p>
-<ul>{% for name, ref in d.references.items() %}<li>{{ name }}: {{ ref | setting }}; its own uncertainty
-{{ '%.1e' % d.reference_uncertainty[name].err_peak_xdd3_rel }}</li>{% endfor %}</ul>
-<p>The reference's uncertainty is its difference in peak XDD(3) from the same run at twice its fixed step or ten
-times its tolerances: errors below it are not resolved.</p>
-<h2>Fastest at or below {{ '%g' % (100 * d.target_error) }} % peak-XDD(3) error</h2>
-<table><tr><th>scene<th>fastest<th>setting<th>ms per simulated s<th>target ms
-<th>error<th>reference uncertainty<th>compiled simulator's speed-up over it</tr>
-{% for t in d.targets %}{% for kind, b in t.best.items() %}<tr><td>{{ t.scene }}<td>{{ b.method }}<td>{{ b.setting }}
-<td class=num>{{ '%.1f' % b.ms_per_simulated_s }}<td class=num>{{ '%.0f' % d.target_ms_per_simulated_s[t.scene] }}
-<td class=num>{{ '%.1e' % b.err_peak_xdd3_rel }}
-<td class=num>{{ '%.1e' % d.reference_uncertainty[t.scene].err_peak_xdd3_rel }}
-<td class=num>{{ '%.1fx' % t.speedup[kind] if t.speedup and kind in t.speedup else '' }}</tr>
-{% else %}<tr><td>{{ t.scene }}
-<td colspan=7>no setting at or below {{ '%g' % (100 * d.target_error) }} % (reference uncertainty
-{{ '%.1e' % d.reference_uncertainty[t.scene].err_peak_xdd3_rel }})</tr>
-{% endfor %}{% endfor %}</table>
-<p><img src="work_precision.png" alt="wall time per simulated second against error, per scene and method"></p>
-<h2>Every case</h2>
-<table><tr><th>scene<th>method<th>setting<th>simulated s<th>wall ms (least-largest)
-<th>ms per simulated s<th>rhs evals<th>steps<th>peak XDD(3) err<th>max stroke err<th>final state err</tr>
-{% for c in d.cases %}<tr><td>{{ c.scene }}<td>{{ c.method }}<td>{{ c.setting }}<td class=num>{{ '%.3f' % c.t_sim_s }}
-<td class=num>{{ '%.2f' % (c.wall_s * 1000) }}
-({{ '%.2f' % (c.wall_min_s * 1000) }}-{{ '%.2f' % (c.wall_max_s * 1000) }})
-<td class=num>{{ '%.1f' % (c.wall_s * 1000 / c.t_sim_s) }}<td class=num>{{ '{:,}'.format(c.rhs_evals) }}
-<td class=num>{{ '{:,}'.format(c.steps) }}<td class=num>{{ '%.1e' % c.err_peak_xdd3_rel }}
-<td class=num>{{ '%.1e' % c.err_max_stroke_rel }}<td class=num>{{ '%.1e' % c.err_final_state_rel }}</tr>
-{% endfor %}</table>""").render(d=data, m=data["machine"])
-
-
-def _plot(data: dict, path: Path) -> None:
-    from matplotlib.figure import Figure
-    scenes = list(data["references"])
-    methods = sorted({c["method"] for c in data["cases"]})
-    ncol = min(3, len(scenes))
-    nrow = -(-len(scenes) // ncol)
-    fig = Figure(figsize=(4.2 * ncol, 3.4 * nrow + 0.8), layout="constrained")
-    axes = fig.subplots(nrow, ncol, squeeze=False)
-    for ax in axes.flat[len(scenes):]:
-        ax.set_axis_off()
-    for ax, scene in zip(axes.flat, scenes):
-        for k, method in enumerate(methods):
-            pts = [(c["err_peak_xdd3_rel"], c["wall_s"] * 1000 / c["t_sim_s"]) for c in data["cases"]
-                   if c["scene"] == scene and c["method"] == method]
-            if pts:
-                e, w = zip(*pts)
-                ax.loglog(np.maximum(e, 1e-16), w, "o-", color=f"C{k}", label=method)
-        ax.axvline(data["target_error"], color="grey", lw=0.8, ls=":")
-        lo, hi = ax.get_xlim()
-        unc = data["reference_uncertainty"][scene]["err_peak_xdd3_rel"]
-        if unc > lo:
-            ax.axvspan(lo, unc, color="grey", alpha=0.15, lw=0, label="below the reference's uncertainty")
-            ax.set_xlim(lo, hi)
-        ax.axhline(data["target_ms_per_simulated_s"][scene], color="grey", lw=0.8, ls=":")
-        ax.set_title(scene, fontsize=9)
-        ax.set_xlabel("relative error in peak XDD(3)")
-        ax.set_ylabel("wall ms per simulated second")
-        ax.grid(alpha=0.3, which="both")
-    handles = {}
-    for ax in axes.flat:
-        for h, label in zip(*ax.get_legend_handles_labels()):
-            handles.setdefault(label, h)
-    fig.legend(handles.values(), handles.keys(), loc="outside lower center", ncol=min(4, len(handles)), fontsize=8)
-    write_atomic(path, lambda tmp: fig.savefig(tmp, format="png", dpi=100, metadata={"Software": None}))
-
-
-def write_bench(data: dict, out: Path) -> list[Path]:
-    out.mkdir(parents=True, exist_ok=True)
-    files = [write_atomic(out / "bench.json", json.dumps(data, indent=2) + "\n")]
-    _plot(data, out / "work_precision.png")
-    files += [out / "work_precision.png", write_atomic(out / "bench.html", _html(data))]
-    return files

@@ -1,30 +1,27 @@
-"""One landing's results as docs/contracts.md asks: summary.json (alightsize.simulate/1), history.parquet and plots
-(XDD and OMD against time as Figs. 33-38, cell strokes, the energy balance, the shock spectrum of XDD(3) as
-Fig. 39)."""
+"""One landing's results as docs/contracts.md asks: the summary (alightsize.simulate/1), the history table, and
+the LandingResult that holds them as tables and draws them (XDD and OMD against time as Figs. 33-38, cell
+strokes, the energy balance, footprints, the shock spectrum of XDD(3) as Fig. 39)."""
 
 from __future__ import annotations
 
-import json
-from pathlib import Path
+from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 import pandas as pd
 
 from alightsize_sim import crush_cell
-from alightsize_sim.landing import Result, kinetic
+from alightsize_sim.landing import Result, kinetic, simulate
 from alightsize_sim.rigid_body import quat_matrices, roll_yaw_pitch
 from alightsize_sim.terrain import height
 from alightsize_sim.terrain import pack as pack_terrain
 
-from alightsize.common.atomic import write_atomic
-from alightsize.common.figures import literal
 from alightsize.model.scene_config import SceneConfig
-from alightsize.landings.footprints import features_met, plot_footprints
+from alightsize.landings.footprints import features_met
 from alightsize.landings.shock_spectrum import default_frequencies, srs
 
 ONSET_WINDOW = 1e-3        # s: onset rates are slopes of the acceleration sampled at this interval
 WALK_WINDOW = 1.0          # s: a landing still moving at t_final walks if its CG moved along the terrain over this
-LINE_STYLES = ("-", "--", ":", "-.")  # the stroke plot's cell kinds; the colour is the leg
 
 
 def body_histories(cfg: SceneConfig, res: Result) -> tuple[np.ndarray, np.ndarray]:
@@ -173,79 +170,80 @@ def history_frame(cfg: SceneConfig, res: Result) -> pd.DataFrame:
     return df
 
 
-def plots(cfg: SceneConfig, res: Result, out: Path) -> list[Path]:
-    from matplotlib.figure import Figure
-    from matplotlib.lines import Line2D
-    xdd, omd = body_histories(cfg, res)
-    files = []
+@dataclass(frozen=True)
+class LandingResult:
+    """One landing of a scene: the scene as read, the simulator's Result, and what alightsize reads from them."""
 
-    def save(fig, name):
-        path = out / name
-        write_atomic(path, lambda tmp: fig.savefig(tmp, format="png", dpi=110, metadata={"Software": None}))
-        files.append(path)
+    config: SceneConfig
+    result: Result
 
-    for data, label, unit, name in ((xdd, "XDD", "g", "xdd.png"), (omd, "OMD", "rad/s²", "omd.png")):
-        fig = Figure(figsize=(7, 7), layout="constrained")
-        axes = fig.subplots(3, 1, sharex=True)
-        for k in range(3):
-            axes[k].plot(res.t, data[:, k], lw=0.9)
-            axes[k].set_ylabel(f"{label}({k + 1}), {unit}")
-            axes[k].grid(alpha=0.3)
-        axes[-1].set_xlabel("time, s")
-        fig.suptitle(f"{literal(cfg.title)}: {label} (cf. Figs. 33-38)")
-        save(fig, name)
-    fig = Figure(figsize=(7, 4), layout="constrained")
-    ax = fig.subplots()
-    kinds = {}                              # cell kind ("rot" for rot1-rot4) -> line style
-    for i in range(len(cfg.scene.legs)):
-        for j, name in enumerate(cfg.cell_names[i]):
-            d = res.deflections[:, i, j]
-            if np.nanmax(np.abs(np.nan_to_num(d))) > 0:
-                style = kinds.setdefault(name.rstrip("0123456789"), LINE_STYLES[len(kinds) % len(LINE_STYLES)])
-                ax.plot(res.t, d * 1000, lw=0.8, color=f"C{i}", ls=style)
-    ax.set_xlabel("time, s")
-    ax.set_ylabel("cell deflection, mm")
-    ax.grid(alpha=0.3)
-    handles = [Line2D([], [], color=f"C{i}", label=f"leg {i + 1}") for i in range(len(cfg.scene.legs))]
-    handles += [Line2D([], [], color="k", ls=style, lw=0.8, label=kind) for kind, style in kinds.items()]
-    fig.legend(handles=handles, loc="outside right upper", fontsize=8)
-    save(fig, "strokes.png")
-    fig = Figure(figsize=(7, 4), layout="constrained")
-    ax = fig.subplots()
-    ke, pe = energies(cfg, res)
-    ax.plot(res.t, ke, label="kinetic")
-    ax.plot(res.t, pe - pe[0], label="potential (from first contact)")
-    ax.plot(res.t, res.y[:, 13], label="work taken by the legs")
-    ax.plot(res.t, ke + pe - pe[0] + res.y[:, 13], "k--", label="sum (conserved)")
-    ax.set_xlabel("time, s")
-    ax.set_ylabel("energy, J")
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
-    save(fig, "energy.png")
-    fig = Figure(figsize=(6, 6), layout="constrained")
-    ax = fig.subplots()
-    plot_footprints(cfg.scene, res, ax)
-    ax.set_title("Footprints on the terrain (plan, terrain axes)")
-    save(fig, "footprints.png")
-    if res.t[-1] > 0:
+    @cached_property
+    def summary(self) -> dict:
+        """summary.json (alightsize.simulate/1, docs/contracts.md)."""
+        return summary(self.config, self.result)
+
+    @cached_property
+    def history(self) -> pd.DataFrame:
+        """The history table (history.parquet): SI, unit-suffixed columns."""
+        return history_frame(self.config, self.result)
+
+    def body(self) -> tuple[np.ndarray, np.ndarray]:
+        """XDD (g) and OMD (rad/s^2) in geometric body axes at every accepted step."""
+        return body_histories(self.config, self.result)
+
+    def spectrum(self) -> pd.DataFrame:
+        """The maximax shock response spectrum of XDD(3) at the scene's damping, 1 Hz to 1 kHz (empty for a
+        landing that ended at its start)."""
+        res = self.result
+        if not res.t[-1] > 0:
+            return pd.DataFrame({"frequency_Hz": [], "acceleration_g": []})
         f = default_frequencies(1.0, 1000.0)
-        spec = srs(res.t, xdd[:, 2], f, cfg.srs_damping)
-        fig = Figure(figsize=(7, 4), layout="constrained")
-        ax = fig.subplots()
-        ax.loglog(f, spec)
-        ax.set_xlabel("frequency, Hz")
-        ax.set_ylabel("maximax absolute acceleration, g")
-        ax.set_title(f"Shock spectrum of XDD(3), {cfg.srs_damping:.0%} damping (cf. Fig. 39)")
-        ax.grid(alpha=0.3, which="both")
-        save(fig, "srs_xdd3.png")
-    return files
+        xdd = self.body()[0]
+        return pd.DataFrame({"frequency_Hz": f, "acceleration_g": srs(res.t, xdd[:, 2], f, self.config.srs_damping)})
+
+    def to_pandas(self) -> dict[str, pd.DataFrame]:
+        """The landing as tables, SI with the unit in each column name: "history" (every point), "cells" (one row
+        per leg and cell), "legs" (one row per leg; features met joined by "; "), "peak", "energy" and "solver"
+        (one row each: the summary's figures, XDD/OMD/onset per body axis 1-3) and "srs" (the shock spectrum of
+        XDD(3))."""
+        s = self.summary
+        peak = s["peak"]
+        return {
+            "history": self.history,
+            "cells": pd.DataFrame([{"leg": leg["leg"], **c} for leg in s["legs"] for c in leg["cells"]]),
+            "legs": pd.DataFrame([{"leg": leg["leg"], "max_ground_force_N": leg["max_ground_force_N"],
+                                   "max_sinkage_m": leg["max_sinkage_m"], "features": "; ".join(leg["features"])}
+                                  for leg in s["legs"]]),
+            "peak": pd.DataFrame([{**{f"xdd{k + 1}_g": v for k, v in enumerate(peak["xdd_g"])},
+                                   **{f"omd{k + 1}_rad_s2": v for k, v in enumerate(peak["omd_rad_s2"])},
+                                   **{f"onset_xdd{k + 1}_g_s": v for k, v in enumerate(peak["onset_g_s"])},
+                                   "nutation_deg": peak["nutation_deg"], "t_end_s": s["t_end_s"],
+                                   "outcome": s["outcome"], "reason": s["reason"]}]),
+            "energy": pd.DataFrame([s["energy"]]),
+            "solver": pd.DataFrame([s["solver"]]),
+            "srs": self.spectrum()}
+
+    def plot(self, kind: str = "xdd"):
+        """A matplotlib Figure: "xdd" or "omd" (body-axis accelerations against time), "strokes", "energy",
+        "footprints" or "srs_xdd3" (the shock spectrum of XDD(3))."""
+        from alightsize.common import figures
+        cfg, res = self.config, self.result
+
+        def body(k: int, label: str, unit: str):
+            return figures.body_figure(res.t, self.body()[k], label, unit, cfg.title)
+
+        def energy():
+            ke, pe = energies(cfg, res)
+            return figures.energy_figure(res.t, ke, pe, res.y[:, 13])
+        tracks = lambda: [res.footpad[res.contact[:, i] > 0, i, :2] for i in range(len(cfg.scene.legs))]  # noqa: E731
+        draw = figures.pick({
+            "xdd": lambda: body(0, "XDD", "g"), "omd": lambda: body(1, "OMD", "rad/s²"),
+            "strokes": lambda: figures.strokes_figure(res.t, res.deflections, cfg.cell_names), "energy": energy,
+            "footprints": lambda: figures.footprints_figure(cfg.scene.terrain, tracks(), res.y[:, :2]),
+            "srs_xdd3": lambda: figures.srs_figure(self.spectrum(), cfg.srs_damping)}, kind)
+        return draw()
 
 
-def write_landing(cfg: SceneConfig, res: Result, out: Path) -> list[Path]:
-    out.mkdir(parents=True, exist_ok=True)
-    summ = summary(cfg, res)
-    files = [write_atomic(out / "summary.json", json.dumps(summ, indent=2) + "\n")]
-    df = history_frame(cfg, res)
-    files.append(write_atomic(out / "history.parquet", lambda tmp: df.to_parquet(tmp, index=False)))
-    files += plots(cfg, res, out)
-    return files
+def land(cfg: SceneConfig) -> LandingResult:
+    """Simulate the scene's landing to its outcome."""
+    return LandingResult(cfg, simulate(cfg.scene, cfg.controls))

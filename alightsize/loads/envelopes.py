@@ -19,6 +19,9 @@ from alightsize_sim.articulated_kinematics import ArticulatedGeometry
 from alightsize_sim.articulated_statics import MEMBERS, TrussAngles, member_loads, reactions
 from alightsize_sim.crush_curve import CrushCurve
 
+# Member labels as Tables 14-22 print them (mirror-image members in parentheses).
+MEMBER_LABELS = {"PL1": "PL1, (PL3)", "PL2": "PL2, (PL6)", "PU1": "PU1, (PU2)", "R1213": "R12/13"}
+
 
 @dataclass(frozen=True)
 class Grid:

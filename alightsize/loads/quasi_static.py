@@ -6,15 +6,17 @@ from __future__ import annotations
 from dataclasses import dataclass
 from math import degrees
 
+import numpy as np
+import pandas as pd
+
 from alightsize_sim.articulated_statics import MEMBERS
 
 from alightsize.common.config import Node
 from alightsize.common.errors import InputError
-from alightsize.loads.envelopes import Extreme, MemberEnvelope, combine, envelope
+from alightsize.loads.envelopes import MEMBER_LABELS, Extreme, MemberEnvelope, combine, envelope, member_fields
 from alightsize.loads.config import LoadsConfig, read_loads
 from alightsize.loads.telescoping import free_body
 
-SCHEMA = "alightsize.loads/1"
 TELESCOPING = "telescoping"
 TELESCOPING_FORCES = ("AF1", "P1", "P2", "P3", "P4")
 SENSES = ("tension", "compression", "magnitude")
@@ -31,6 +33,54 @@ class LoadsResult:
     def combined(self) -> dict[str, tuple[str, ...]]:
         return dict(self.config.combined)
 
+    def to_pandas(self) -> dict[str, pd.DataFrame]:
+        """The envelopes as tables, SI with the unit in each column name: "envelopes" (one row per envelope and
+        member: each sense's extreme load, where it occurs, alpha, beta, psi in degrees to 9 places, and for a
+        combination the configuration it comes from) and, with a telescoping leg, "telescoping" (the App. III
+        free body, one row)."""
+        rows = []
+        for name, members in self.envelopes.items():
+            for r in members:
+                row = {"envelope": name, "combined": name in self.combined, "member": r.member}
+                for key, e in (("tension", r.tension), ("compression", r.compression)):
+                    at = [round(degrees(a), 9) for a in e.at] if e is not None else [None] * 3
+                    row |= {f"{key}_N": e.value if e is not None else None,
+                            **{f"{key}_{ax}_deg": v for ax, v in zip(("alpha", "beta", "psi"), at)},
+                            f"{key}_configuration": e.configuration if e is not None else None}
+                rows.append(row)
+        columns = ["envelope", "combined", "member"] + [
+            f"{key}_{field}" for key in ("tension", "compression")
+            for field in ("N", "alpha_deg", "beta_deg", "psi_deg", "configuration")]
+        out = {"envelopes": pd.DataFrame(rows, columns=columns)}
+        if self.telescoping is not None:
+            t = self.telescoping
+            out["telescoping"] = pd.DataFrame([{**{f"{k}_N": t[k] for k in TELESCOPING_FORCES},
+                                                "w1_N_per_m": t["w1"], "w2_N_per_m": t["w2"]}])
+        return out
+
+    def fields(self, case_name: str) -> pd.DataFrame:
+        """Each member's load over the alpha-beta grid of configuration `case_name` at the psi where its magnitude
+        is largest: one row per member and grid point (member, psi_deg, alpha_deg, beta_deg, load_N; NaN where a
+        cell has bottomed)."""
+        case = next(c for c in self.config.cases if c.name == case_name)
+        (psi, alpha, beta), fields = member_fields(case, self.config.grid)
+        a, b = np.meshgrid(np.degrees(alpha), np.degrees(beta), indexing="ij")
+        parts = []
+        for m in MEMBERS:
+            f = np.asarray(fields[m])
+            k = int(np.unravel_index(np.nanargmax(np.abs(f)), f.shape)[0])
+            parts.append(pd.DataFrame({"member": m, "psi_deg": float(np.degrees(psi[k])), "alpha_deg": a.ravel(),
+                                       "beta_deg": b.ravel(), "load_N": f[k].ravel()}))
+        return pd.concat(parts, ignore_index=True)
+
+    def plot(self, kind: str | None = None, system: str | None = None):
+        """A matplotlib Figure: the heat map of configuration `kind` (default the first): each member's load over
+        alpha-beta at its governing psi, in `system`'s units (default the config's)."""
+        from alightsize.common import figures
+        names = [c.name for c in self.config.cases]
+        name = figures.pick(dict(zip(names, names)), names[0] if kind is None else kind)
+        return figures.heatmap_figure(self.fields(name), name, system or self.config.units, MEMBER_LABELS)
+
 
 def run_loads(cfg: LoadsConfig) -> LoadsResult:
     env = {}
@@ -44,29 +94,6 @@ def run_loads(cfg: LoadsConfig) -> LoadsResult:
         env[name] = combine([env[m] for m in members])
     tele = {"AF1": cfg.telescoping.axial_crush, **free_body(cfg.telescoping)} if cfg.telescoping else None
     return LoadsResult(cfg, env, tele)
-
-
-def _extreme_json(e: Extreme | None, key: str, combined: bool) -> dict:
-    if e is None:
-        return {f"{key}_N": None, f"{key}_at_deg": None}
-    out = {f"{key}_N": e.value, f"{key}_at_deg": [round(degrees(a), 9) for a in e.at]}
-    if combined:
-        out[f"{key}_configuration"] = e.configuration
-    return out
-
-
-def loads_json(res: LoadsResult) -> dict:
-    """max_member_loads.json (docs/contracts.md, alightsize.loads/1)."""
-    confs = {name: [{"member": r.member, **_extreme_json(r.tension, "tension", name in res.combined),
-                     **_extreme_json(r.compression, "compression", name in res.combined)} for r in rows]
-             for name, rows in res.envelopes.items()}
-    out = {"schema": SCHEMA, "title": res.config.title, "configurations": confs,
-           "combined": {k: list(v) for k, v in res.combined.items()}}
-    if res.telescoping is not None:
-        t = res.telescoping
-        out["telescoping"] = {**{f"{k}_N": t[k] for k in TELESCOPING_FORCES},
-                              "w1_N_per_m": t["w1"], "w2_N_per_m": t["w2"]}
-    return out
 
 
 class Unloaded(Exception):

@@ -8,15 +8,15 @@ from math import isfinite
 
 import pandas as pd
 
-from alightsize.checks.audit import CheckRecord, audit_json, run_audit
+from alightsize.checks.audit import CheckRecord, run_audit
 from alightsize.checks.sizing import Sizing, size_item
 from alightsize.common.units import fmt
 from alightsize.landings.criteria import violation_kinds
 from alightsize.pipeline.config import DesignConfig, DesignSpec, prepare
 from alightsize.pipeline.items import Item
-from alightsize.pipeline.plots import design_factor_figure, weight_figure
 
-SCHEMA = "alightsize.design/1"
+CHECK_COLUMNS = ["configuration", "item", "check", "kind", "load_N", "stress_Pa", "allowable_Pa", "design_factor",
+                 "required_design_factor", "margin_of_safety", "ok", "ok_as_stated"]     # CheckRecord.as_json
 
 
 @dataclass(frozen=True)
@@ -61,6 +61,12 @@ class DesignResult:
     @property
     def ok(self) -> bool:
         return self.checks_ok and self.landings_ok and self.weight_ok
+
+    def governing_cases(self) -> list[str]:
+        """Configurations whose envelope extremes the checks use, in the order of the loads file."""
+        cfg = self.config
+        used = {r.extreme.configuration for r in cfg.load_refs if r.extreme is not None}
+        return [c.name for c in cfg.loads.config.cases if c.name in used] if cfg.loads else []
 
     def governing(self) -> CheckRecord | None:
         """The check with the smallest margin of safety."""
@@ -122,7 +128,7 @@ class DesignResult:
                 parts.append(f"{n} landings used as load cases only (criteria not required: {len(bad)} of them "
                              "violate the study's criteria)")
             elif bad:
-                parts.append(f"{len(bad)} of {n} landings fail their criteria ({criteria_counts(bad)})")
+                parts.append(f"{len(bad)} of {n} landings fail their criteria ({land.criteria_counts()})")
             else:
                 parts.append(f"all {n} landings meet their criteria")
         if not self.weight_ok:
@@ -136,22 +142,32 @@ class DesignResult:
 
     def to_pandas(self) -> dict[str, pd.DataFrame]:
         """The result as tables, SI with the unit in each column name: "checks" (one row per check, with f,
-        MS and verdict), "weights" (per item) and, with landing cases, "landings" (one row per landing)."""
-        checks = pd.DataFrame([r.as_json() for r in self.records])
+        MS and verdict; None where f is infinite), "weights" (per item), with landing cases "landings" (one row per
+        landing as stored) and with sized items "sizing" (one row per sized item)."""
+        checks = pd.DataFrame([r.as_json() for r in self.records], columns=CHECK_COLUMNS)
         weights = pd.DataFrame([{"item": w.label, "count_per_leg": w.count, "weight_each_kg": w.each,
-                                 "weight_per_leg_kg": w.count * w.each} for w in self.weights])
+                                 "weight_per_leg_kg": w.count * w.each} for w in self.weights],
+                               columns=["item", "count_per_leg", "weight_each_kg", "weight_per_leg_kg"])
         out = {"checks": checks, "weights": weights}
         if self.config.landings is not None:
             out["landings"] = pd.DataFrame(self.config.landings.rows)
+        if self.sizings:
+            out["sizing"] = pd.DataFrame([{"item": s.item, "dimension": s.dimension, "printed_m": s.printed,
+                                           "sized_m": s.sized, "design_factor_printed": _finite(s.factor_printed),
+                                           "design_factor_sized": _finite(s.factor_sized),
+                                           "weight_printed_kg": s.weight_printed, "weight_sized_kg": s.weight_sized,
+                                           "feasible": s.feasible, "at_bound": s.at_bound} for s in self.sizings])
         return out
 
     def plot(self, kind: str = "factors"):
         """A matplotlib Figure: "factors" (each item's governing design factor against the requirement) or
-        "weights" (the weight breakdown per leg)."""
-        figures = {"factors": design_factor_figure, "weights": weight_figure}
-        if kind not in figures:
-            raise ValueError(f"plot kind {kind!r}: expected one of {', '.join(figures)}")
-        return figures[kind](self)
+        "weights" (the weight breakdown per leg), drawn from `to_pandas()`."""
+        from alightsize.common import figures
+        tables, name = self.to_pandas(), self.config.configuration
+        draw = figures.pick({"factors": lambda: figures.design_factor_figure(tables["checks"], name),
+                             "weights": lambda: figures.weight_figure(tables["weights"], name, self.config.units)},
+                            kind)
+        return draw()
 
 
 CLOSEST_HEAD = "nearest to failing, per criterion (margin = 1 - used / allowed, below 0 fails):"
@@ -162,10 +178,8 @@ def below_one_line(items: list[tuple[str, float]]) -> str:
     return "required design factor below 1 (allow_below_one): " + ", ".join(f"{n} {f:g}" for n, f in items)
 
 
-def criteria_counts(rows) -> str:
-    """"a cell bottomed 8, XDD(1) > 1000 g/s 24": how many landings violate each kind of criterion."""
-    kinds = Counter(k for r in rows for k in dict.fromkeys(violation_kinds(r["criteria_failed"])))
-    return ", ".join(f"{k} {n}" for k, n in kinds.most_common())
+def _finite(x: float) -> float | None:
+    return x if isfinite(x) else None
 
 
 def run_design(cfg: DesignConfig | DesignSpec, landings_dir=None, progress: bool = False,
@@ -196,44 +210,3 @@ def audit(cfg: DesignConfig | DesignSpec, landings_dir=None, rows: tuple[dict, .
     """The design-factor audit (`alightsize audit`): every item's checks at its section as written, never sized
     (a `size` table is what `alightsize design` does with the item)."""
     return run_design(cfg, landings_dir, rows=rows, size=False)
-
-
-def weights_json(res: DesignResult) -> dict:
-    cfg = res.config
-    total = res.per_leg * cfg.legs
-    return {cfg.configuration: {
-        "items": [{"item": w.label, "count_per_leg": w.count, "weight_each_kg": w.each} for w in res.weights],
-        "per_leg_kg": res.per_leg, "legs": cfg.legs, "total_kg": total, "capsule_kg": cfg.capsule_mass,
-        "fraction_of_capsule": total / cfg.capsule_mass if cfg.capsule_mass else None}}
-
-
-def summary_json(res: DesignResult) -> dict:
-    out = {"schema": SCHEMA, "ok": res.ok, "configuration": res.config.configuration, "verdict": res.verdict(),
-           "checks_ok": res.checks_ok, "landings_ok": res.landings_ok,
-           "required_below_one": [{"item": n, "required_design_factor": f} for n, f in res.below_one],
-           "audit": {k: v for k, v in audit_json(res.config, res.records).items() if k != "schema"},
-           "weights": weights_json(res)}
-    if res.config.loads is not None:
-        from alightsize.loads.quasi_static import loads_json
-        out["loads"] = {k: v for k, v in loads_json(res.config.loads).items() if k != "schema"}
-    if res.config.landings is not None:
-        from alightsize.pipeline.landings import landings_json
-        out["landings"] = landings_json(res.config.landings)
-        out["landing_margins"] = [c.as_json() for c in res.config.landings.closest]
-    if res.sizings:
-        out["sizing"] = [{"item": s.item, "dimension": s.dimension, "printed_m": s.printed, "sized_m": s.sized,
-                          "design_factor_printed": _finite(s.factor_printed),
-                          "design_factor_sized": _finite(s.factor_sized),
-                          "weight_printed_kg": s.weight_printed, "weight_sized_kg": s.weight_sized,
-                          "feasible": s.feasible, "at_bound": s.at_bound} for s in res.sizings]
-    return out
-
-
-def _finite(x: float) -> float | None:
-    return x if isfinite(x) else None
-
-
-def governing_cases(cfg: DesignConfig) -> list[str]:
-    """Configurations whose envelope extremes the checks use, in the order of the loads file."""
-    used = {r.extreme.configuration for r in cfg.load_refs if r.extreme is not None}
-    return [c.name for c in cfg.loads.config.cases if c.name in used] if cfg.loads else []

@@ -15,6 +15,7 @@ role = "criteria"                         # default: every landing must meet the
 from __future__ import annotations
 
 import dataclasses
+from collections import Counter
 from functools import partial
 import json
 import tempfile
@@ -29,7 +30,7 @@ from alightsize.common.errors import InputError
 from alightsize.loads.config import LoadsConfig
 from alightsize.loads.histories import dynamic_envelope
 from alightsize.loads.envelopes import Extreme
-from alightsize.landings.criteria import Closest, LandingLimits, closest
+from alightsize.landings.criteria import Closest, LandingLimits, closest, violation_kinds
 from alightsize.loads.quasi_static import TELESCOPING, TELESCOPING_FORCES, LoadsResult, pick
 from alightsize.loads.telescoping import sliding_loads
 from alightsize.landings.run_store import RunStore
@@ -79,6 +80,36 @@ class Landings:
     def ok(self) -> bool:
         """Whether the landings let the design pass: always as load cases, else when every one meets them."""
         return self.role == "load_cases" or not self.failing
+
+    def criteria_counts(self) -> str:
+        """"a cell bottomed 8, XDD(1) > 1000 g/s 24": how many landings violate each kind of criterion."""
+        kinds = Counter(k for r in self.failing for k in dict.fromkeys(violation_kinds(r["criteria_failed"])))
+        return ", ".join(f"{k} {n}" for k, n in kinds.most_common())
+
+    def quasi_static_load(self, envelope: str, member: str, sense: str) -> float | None:
+        """The load magnitude an envelope reference had before the landings joined (None: not loaded so)."""
+        if envelope == TELESCOPING:
+            return abs(self.quasi_static.telescoping[member])
+        qs = pick(self.quasi_static, envelope, member, sense)
+        return abs(qs.value) if qs else None
+
+    def cases(self) -> list[dict]:
+        """design summary.json `landings` (docs/contracts.md): scene, conditions, outcome, criteria, peak and
+        energy per landing case."""
+        out = []
+        for r, c in zip(self.rows, self.conditions):
+            out.append({"run_id": r["run_id"], "scene": r["scene"], "parameters": json.loads(r["params_json"]),
+                        "conditions": c, "outcome": r["outcome"], "outcome_class": r["outcome_class"],
+                        "criteria_ok": None if r.get("criteria_ok") is None else bool(r["criteria_ok"]),
+                        "criteria_failed": [f for f in (r.get("criteria_failed") or "").split("; ") if f],
+                        "peak": {"xdd_g": [r[f"peak_xdd{i}_g"] for i in (1, 2, 3)],
+                                 "omd_rad_s2": [r[f"peak_omd{i}_rad_s2"] for i in (1, 2, 3)],
+                                 "onset_g_s": [r[f"peak_onset_xdd{i}_g_s"] for i in (1, 2, 3)]},
+                        "energy": {k: r[f"energy_{k}"] for k in ("initial_J", "absorbed_J", "elastic_J",
+                                                                "friction_J", "kinetic_end_J", "potential_change_J")}
+                        | {"closure_rel": r["closure_rel"]},
+                        "member_loads": json.loads(r["member_loads_json"])})
+        return out
 
 
 def _extreme(value: float | None, at: dict | None, run_id: str) -> Extreme | None:
@@ -193,31 +224,3 @@ def landed(spec: LandingSpec, loads: LoadsResult, rows: tuple[dict, ...]) -> tup
         raise InputError(str(spec.study.path), "landings", "landing cases that all run",
                          f"runs {', '.join(r['run_id'] for r in failed)} failed: {failed[0]['message']}")
     return merge(loads, rows, spec.envelopes), Landings(spec.study, spec.envelopes, rows, loads, spec.role)
-
-
-def quasi_static_load(landings: Landings, envelope: str, member: str, sense: str) -> float | None:
-    """The load magnitude an envelope reference had before the landings joined (None: not loaded so)."""
-    if envelope == TELESCOPING:
-        return abs(landings.quasi_static.telescoping[member])
-    qs = pick(landings.quasi_static, envelope, member, sense)
-    return abs(qs.value) if qs else None
-
-
-def landings_json(landings: Landings) -> list[dict]:
-    """design summary.json `landings` (docs/contracts.md): scene, conditions, outcome, criteria, peak and energy per
-    landing case."""
-    out = []
-    for r, c in zip(landings.rows, landings.conditions):
-        out.append({"run_id": r["run_id"], "scene": r["scene"], "parameters": json.loads(r["params_json"]),
-                    "conditions": c, "outcome": r["outcome"], "outcome_class": r["outcome_class"],
-                    "criteria_ok": None if r.get("criteria_ok") is None else bool(r["criteria_ok"]),
-                    "criteria_failed": [f for f in (r.get("criteria_failed") or "").split("; ") if f],
-                    "peak": {"xdd_g": [r[f"peak_xdd{i}_g"] for i in (1, 2, 3)],
-                             "omd_rad_s2": [r[f"peak_omd{i}_rad_s2"] for i in (1, 2, 3)],
-                             "onset_g_s": [r[f"peak_onset_xdd{i}_g_s"] for i in (1, 2, 3)]},
-                    "energy": {k: r[f"energy_{k}"] for k in ("initial_J", "absorbed_J", "elastic_J", "friction_J",
-                                                            "kinetic_end_J", "potential_change_J")}
-                    | {"closure_rel": r["closure_rel"]},
-                    "member_loads": json.loads(r["member_loads_json"])})
-    return out
-

@@ -11,20 +11,21 @@ from pathlib import Path
 
 import pandas as pd
 from openpyxl import Workbook
-from openpyxl.styles import Font
 
 from alightsize import __version__
-from alightsize.checks.audit import failure_label
+from alightsize.common.figures import save_png
 from alightsize.common.trace import Step
 from alightsize.common.units import fmt, to_display, unit_label
-from alightsize.pipeline.design import CLOSEST_HEAD, DesignResult, criteria_counts, governing_cases, summary_json
+from alightsize.pipeline.design import CLOSEST_HEAD, DesignResult
 from alightsize.loads.quasi_static import TELESCOPING
-from alightsize.pipeline.landings import LANDING, landings_json, quasi_static_load
+from alightsize.pipeline.landings import LANDING
 from alightsize.reports.loads_report import context as loads_context
-from alightsize.reports.loads_report import heatmap, write_workbook as write_loads_workbook
-from alightsize.pipeline.plots import design_factor_figure, weight_figure
-from alightsize.reports.rendering import frame_sheet, save_workbook, template_env, text_cell
+from alightsize.reports.loads_report import heatmap, loads_json, write_workbook as write_loads_workbook
+from alightsize.reports.rendering import frame_sheet, json_records, save_workbook, template_env
 from alightsize.common.atomic import write_atomic
+
+SCHEMA = "alightsize.design/1"
+AUDIT_SCHEMA = "alightsize.audit/1"
 
 
 _POWERED = re.compile(r"\{([^{}]+)\}(?=[²³⁴])")
@@ -76,7 +77,8 @@ def context(res) -> dict:
         sheets.append({
             "name": item.name, "count": item.count, "material": item.material.name, "size": _dims(item, system),
             "note": item.note,
-            "checks": [{"title": _check_title(item.checks[r.index].kind, r.outcome.mode), "note": item.checks[r.index].note,
+            "checks": [{"title": _check_title(item.checks[r.index].kind, r.outcome.mode),
+                        "note": item.checks[r.index].note,
                         "steps": [_step(s, system) for s in r.outcome.steps],
                         "allowable": fmt(r.outcome.allowable, "stress", system) if r.outcome.allowable else "",
                         "factor": r.stated_factor, "required": f"{r.required:.2f}", "ok": r.ok,
@@ -94,17 +96,17 @@ def context(res) -> dict:
                "w_sized": fmt(s.weight_sized, "mass", system) if s.weight_sized else "",
                "saved": fmt(s.weight_printed - s.weight_sized, "mass", system)
                if s.weight_printed and s.weight_sized else ""} for s in res.sizings]
-    return {"loads": _loads_context(cfg, system), "references": _references(cfg, system),
+    return {"loads": _loads_context(res, system), "references": _references(cfg, system),
             "verdict": res.verdict(), "checks_ok": res.checks_ok, "landings": _landings(cfg, system),
-            "headlines": res.headlines(system), "closest_head": CLOSEST_HEAD, "closest": [{"line": c.line(), "failed": c.margin.failed,
-                                                      "anchor": _anchor(c.run_id) if c.run_id else None}
-                                                     for c in (cfg.landings.closest if cfg.landings else ())],
+            "headlines": res.headlines(system), "closest_head": CLOSEST_HEAD,
+            "closest": [{"line": c.line(), "failed": c.margin.failed, "anchor": _anchor(c.run_id) if c.run_id else None}
+                        for c in (cfg.landings.closest if cfg.landings else ())],
             "title": cfg.title, "configuration": cfg.configuration, "source": cfg.path.name, "units": system,
             "version": __version__, "ok": res.ok, "sheets": sheets, "weights": weights, "sizing": sizing,
             "per_leg": fmt(res.per_leg, "mass", system), "legs": cfg.legs, "total": fmt(total, "mass", system),
             "capsule": fmt(cfg.capsule_mass, "mass", system) if cfg.capsule_mass else "",
             "percent": f"{100 * total / cfg.capsule_mass:.2f}" if cfg.capsule_mass else "",
-            "failed": [failure_label(r) for r in res.records if not r.ok]}
+            "failed": [r.failure_label for r in res.records if not r.ok]}
 
 
 def _conditions(c: dict, system: str) -> str:
@@ -179,20 +181,22 @@ def _landings(cfg, system: str) -> dict | None:
     rows = list(landing_rows(cfg, system).values())
     return {"role": land.role, "study": land.study.name, "count": len(rows), "rows": rows,
             "criteria": "; ".join(limits) or "none given", "failing": len(land.failing),
-            "counts": criteria_counts(land.failing),
+            "counts": land.criteria_counts(),
             "outcomes": ", ".join(f"{k} {n}" for k, n in Counter(r["outcome"] for r in land.rows).most_common())}
 
 
-def _loads_context(cfg, system: str) -> dict | None:
+def _loads_context(res: DesignResult, system: str) -> dict | None:
+    cfg = res.config
     if cfg.loads is None:
         return None
     landed = cfg.landings is not None and cfg.loads.telescoping is not None and TELESCOPING in cfg.landings.envelopes
-    return loads_context(cfg.loads, system, governing_cases(cfg),
+    return loads_context(cfg.loads, system, res.governing_cases(),
                          cfg.landings.quasi_static.telescoping if landed else None)
 
 
 def _reference_label(cfg, key: str) -> str:
-    """A check's load key, 'item["Upper Truss"].check["column_buckling"].load' -> "Upper Truss / column buckling (load)"."""
+    """A check's load key, 'item["Upper Truss"].check["column_buckling"].load' -> "Upper Truss / column buckling
+    (load)"."""
     for item in cfg.items:
         for check in item.checks:
             if key.startswith(check.where + "."):
@@ -213,7 +217,7 @@ def _references(cfg, system: str) -> list[dict]:
                "configuration": r.extreme.configuration if r.extreme else "", "quasi_static": None, "governs": "",
                "landing": None}
         if cfg.landings is not None and r.extreme is not None and r.envelope in cfg.landings.envelopes:
-            qs = quasi_static_load(cfg.landings, r.envelope, r.member, r.sense)
+            qs = cfg.landings.quasi_static_load(r.envelope, r.member, r.sense)
             row["quasi_static"] = fmt(qs * r.factor, "force", system) if qs is not None else "-"
             row["governs"] = "landing" if r.extreme.configuration.startswith(LANDING) else "quasi-static"
             row["landing"] = landings.get(r.extreme.configuration.removeprefix(LANDING))
@@ -230,67 +234,72 @@ def render_markdown(res) -> str:
 
 
 def write_workbook(res, path: Path) -> None:
-    """Stress sheet and weight sheet, values in the display units, numbers as numbers."""
-    cfg, system = res.config, res.config.units
+    """Stress sheet and weight sheet (and with them Sizing and Landings), values in the display units, numbers as
+    numbers, user text as text."""
+    system = res.config.units
     wb = Workbook()
-    ws = wb.active
-    ws.title = "Stress"
-    su = unit_label("stress", system)
-    head = ["Item", "Count per leg", "Material", "Check", "Failure mode", f"Stress ({su})", f"Allowable ({su})",
-            "Design factor", "Required", "Margin of safety", "OK"]
-    ws.append(head)
-    for r in res.records:
-        o = r.outcome
-        row = [None, r.item.count, None, r.item.checks[r.index].kind, o.mode,
-               round(to_display(o.stress, "stress", system), 1) if o.stress is not None else None,
-               round(to_display(o.allowable, "stress", system), 1) if o.allowable is not None else None,
-               round(o.factor, 4) if isfinite(o.factor) else None, r.required,
-               round(r.margin, 4) if isfinite(r.margin) else None, "yes" if r.ok else "NO"]
-        ws.append(row)
-        text_cell(ws.cell(ws.max_row, 1), r.item.name)
-        text_cell(ws.cell(ws.max_row, 3), r.item.material.name)
-    wu = unit_label("mass", system)
-    wsw = wb.create_sheet("Weights")
-    wsw.append(["Item", "Count per leg", f"Weight each ({wu})", f"Weight per leg ({wu})"])
-    for w in res.weights:
-        each = round(to_display(w.each, "mass", system), 4)
-        wsw.append([None, w.count, each, round(each * w.count, 4)])
-        text_cell(wsw.cell(wsw.max_row, 1), w.label)
-    per_leg = to_display(res.per_leg, "mass", system)
-    wsw.append(["Total each leg", None, None, round(per_leg, 4)])
-    wsw.append([f"Total {cfg.legs} legs", None, None, round(per_leg * cfg.legs, 4)])
-    if cfg.capsule_mass:
-        wsw.append(["Percent of capsule", None, None, round(100 * res.per_leg * cfg.legs / cfg.capsule_mass, 3)])
-    for sheet in (ws, wsw):
-        for c in sheet[1]:
-            c.font = Font(bold=True)
-        for col in sheet.columns:
-            sheet.column_dimensions[col[0].column_letter].width = max(12, max(len(str(c.value or "")) for c in col) + 2)
+    wb.remove(wb.active)
+    frame_sheet(wb, "Stress", stress_frame(res, system))
+    frame_sheet(wb, "Weights", weights_frame(res, system))
     if res.sizings:
         frame_sheet(wb, "Sizing", sizing_frame(res, system))
-    if cfg.landings is not None:
-        frame_sheet(wb, "Landings", landings_frame(landings_json(cfg.landings), system))
+    if res.config.landings is not None:
+        frame_sheet(wb, "Landings", landings_frame(res.config.landings.cases(), system))
     save_workbook(wb, path)
 
 
+def stress_frame(res: DesignResult, system: str) -> pd.DataFrame:
+    """One row per check (the "checks" table): stress and allowable in the display unit to 0.1, f and MS to 4
+    places (empty where infinite)."""
+    checks, su = res.to_pandas()["checks"], unit_label("stress", system)
+
+    def stress(col: str) -> list:
+        return [round(to_display(v, "stress", system), 1) if pd.notna(v) else None for v in checks[col]]
+
+    def four(col: str) -> list:
+        return [round(v, 4) if pd.notna(v) else None for v in checks[col]]
+    return pd.DataFrame({"Item": checks["item"], "Count per leg": [r.item.count for r in res.records],
+                         "Material": [r.item.material.name for r in res.records], "Check": checks["kind"],
+                         "Failure mode": checks["check"], f"Stress ({su})": stress("stress_Pa"),
+                         f"Allowable ({su})": stress("allowable_Pa"), "Design factor": four("design_factor"),
+                         "Required": checks["required_design_factor"], "Margin of safety": four("margin_of_safety"),
+                         "OK": ["yes" if ok else "NO" for ok in checks["ok"]]}, dtype=object)
+
+
+def weights_frame(res: DesignResult, system: str) -> pd.DataFrame:
+    """One row per weight entry (the "weights" table) in the display unit, then the totals per leg, for all legs
+    and as a percentage of the capsule."""
+    cfg, weights, wu = res.config, res.to_pandas()["weights"], unit_label("mass", system)
+    rows = []
+    for w in weights.to_dict("records"):
+        each = round(to_display(w["weight_each_kg"], "mass", system), 4)
+        rows.append([w["item"], w["count_per_leg"], each, round(each * w["count_per_leg"], 4)])
+    per_leg = to_display(res.per_leg, "mass", system)
+    rows += [["Total each leg", None, None, round(per_leg, 4)],
+             [f"Total {cfg.legs} legs", None, None, round(per_leg * cfg.legs, 4)]]
+    if cfg.capsule_mass:
+        rows.append(["Percent of capsule", None, None, round(100 * res.per_leg * cfg.legs / cfg.capsule_mass, 3)])
+    return pd.DataFrame(rows, columns=["Item", "Count per leg", f"Weight each ({wu})", f"Weight per leg ({wu})"],
+                        dtype=object)
+
+
 def sizing_frame(res: DesignResult, system: str) -> pd.DataFrame:
-    """One row per sized item, lengths and weights in the display units."""
+    """One row per sized item (the "sizing" table), lengths and weights in the display units."""
+    t = res.to_pandas()["sizing"]
     lu, wu = unit_label("length", system), unit_label("mass", system)
-    length, mass = (lambda v: to_display(v, "length", system)), (lambda v: to_display(v, "mass", system) if v else None)
-    return pd.DataFrame({"Item": [s.item for s in res.sizings],
-                         "Dimension": [s.dimension.replace("_", " ") for s in res.sizings],
-                         f"Printed ({lu})": [length(s.printed) for s in res.sizings],
-                         f"Sized ({lu})": [length(s.sized) for s in res.sizings],
-                         "f printed": [s.factor_printed for s in res.sizings],
-                         "f sized": [s.factor_sized for s in res.sizings],
-                         f"Weight printed ({wu})": [mass(s.weight_printed) for s in res.sizings],
-                         f"Weight sized ({wu})": [mass(s.weight_sized) for s in res.sizings],
-                         "Meets the required factor": ["yes" if s.feasible else "NO" for s in res.sizings],
-                         "At an end of its range": ["yes" if s.at_bound else "" for s in res.sizings]})
+    length = lambda v: to_display(v, "length", system)                                    # noqa: E731
+    mass = lambda v: to_display(v, "mass", system) if pd.notna(v) and v else None          # noqa: E731
+    return pd.DataFrame({"Item": t["item"], "Dimension": t["dimension"].str.replace("_", " "),
+                         f"Printed ({lu})": t["printed_m"].map(length), f"Sized ({lu})": t["sized_m"].map(length),
+                         "f printed": t["design_factor_printed"], "f sized": t["design_factor_sized"],
+                         f"Weight printed ({wu})": t["weight_printed_kg"].map(mass),
+                         f"Weight sized ({wu})": t["weight_sized_kg"].map(mass),
+                         "Meets the required factor": ["yes" if ok else "NO" for ok in t["feasible"]],
+                         "At an end of its range": ["yes" if b else "" for b in t["at_bound"]]})
 
 
 def landings_frame(rows: list[dict], system: str) -> pd.DataFrame:
-    """One row per landing case (`landings_json`): its conditions in the display units, outcome, criteria and peak
+    """One row per landing case (`Landings.cases`): its conditions in the display units, outcome, criteria and peak
     accelerations."""
     vu = unit_label("velocity", system)
     speed = lambda v: to_display(v, "velocity", system) if v is not None else None    # noqa: E731
@@ -308,7 +317,36 @@ def landings_frame(rows: list[dict], system: str) -> pd.DataFrame:
 
 
 def _png(fig, path: Path) -> None:
-    fig.savefig(path, format="png", dpi=90, metadata={"Software": None})   # no version stamp: same bytes
+    save_png(fig, path, 90)
+
+
+def audit_json(res: DesignResult) -> dict:
+    """The audit (alightsize.audit/1): the required factor, the verdict and every check (the "checks" table)."""
+    return {"schema": AUDIT_SCHEMA, "required_design_factor": res.config.required, "ok": all(r.ok for r in res.records),
+            "checks": json_records(res.to_pandas()["checks"])}
+
+
+def summary_json(res: DesignResult) -> dict:
+    """summary.json (alightsize.design/1, docs/contracts.md) from the result and its tables."""
+    cfg, tables = res.config, res.to_pandas()
+    total = res.per_leg * cfg.legs
+    items = tables["weights"][["item", "count_per_leg", "weight_each_kg"]]
+    out = {"schema": SCHEMA, "ok": res.ok, "configuration": cfg.configuration, "verdict": res.verdict(),
+           "checks_ok": res.checks_ok, "landings_ok": res.landings_ok,
+           "required_below_one": [{"item": n, "required_design_factor": f} for n, f in res.below_one],
+           "audit": {k: v for k, v in audit_json(res).items() if k != "schema"},
+           "weights": {cfg.configuration: {
+               "items": json_records(items), "per_leg_kg": res.per_leg, "legs": cfg.legs, "total_kg": total,
+               "capsule_kg": cfg.capsule_mass,
+               "fraction_of_capsule": total / cfg.capsule_mass if cfg.capsule_mass else None}}}
+    if cfg.loads is not None:
+        out["loads"] = {k: v for k, v in loads_json(cfg.loads).items() if k != "schema"}
+    if cfg.landings is not None:
+        out["landings"] = cfg.landings.cases()
+        out["landing_margins"] = [c.as_json() for c in cfg.landings.closest]
+    if "sizing" in tables:
+        out["sizing"] = json_records(tables["sizing"])
+    return out
 
 
 def write_design(res: DesignResult, out: Path) -> list[Path]:
@@ -319,8 +357,8 @@ def write_design(res: DesignResult, out: Path) -> list[Path]:
             write_atomic(out / "report.html", render_html(res)),
             write_atomic(out / "report.md", render_markdown(res)),
             write_atomic(out / "design.xlsx", lambda p: write_workbook(res, p)),
-            write_atomic(out / "design_factors.png", lambda p: _png(design_factor_figure(res), p)),
-            write_atomic(out / "weights.png", lambda p: _png(weight_figure(res), p))] + _loads_files(res, out)
+            write_atomic(out / "design_factors.png", lambda p: _png(res.plot("factors"), p)),
+            write_atomic(out / "weights.png", lambda p: _png(res.plot("weights"), p))] + _loads_files(res, out)
 
 
 def _loads_files(res: DesignResult, out: Path) -> list[Path]:
@@ -329,6 +367,6 @@ def _loads_files(res: DesignResult, out: Path) -> list[Path]:
     if loads is None:
         return []
     files = [write_atomic(out / "max_member_loads.xlsx", lambda p: write_loads_workbook(loads, p, system))]
-    for name in governing_cases(res.config):
+    for name in res.governing_cases():
         files.append(write_atomic(out / f"heatmap_{name}.png", lambda p, n=name: heatmap(loads, n, p, system)))
     return files

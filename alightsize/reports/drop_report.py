@@ -18,9 +18,9 @@ from pathlib import Path
 from typing import NamedTuple
 
 import numpy as np
-from matplotlib.figure import Figure
+import pandas as pd
 
-from alightsize_sim.landing import Result, simulate
+from alightsize_sim.landing import Result
 
 from alightsize import __version__
 
@@ -29,11 +29,11 @@ from alightsize.reports import drop_tables
 from alightsize.common import units
 from alightsize.common.atomic import write_atomic
 from alightsize.common.lock import output_folder
-from alightsize.landings.output import body_histories, summary
+from alightsize.common.figures import drop_energy_figure, drop_histories_figure, save_png, srs_figure
+from alightsize.landings.output import LandingResult, land
 from alightsize.reports.rendering import template_env
 from alightsize.common.resources import data_dir
 from alightsize.model.scene_config import SceneConfig, read_scene
-from alightsize.landings.shock_spectrum import default_frequencies, srs
 
 SCHEMA = "alightsize.drops/1"
 DROPS_DIR = data_dir("examples") / "affdl-tr-66-33" / "drops"
@@ -41,7 +41,6 @@ DROP_NUMBERS = (1, 2, 3, 4, 5, 6, 8, 9, 10, 11)              # AFFDL-TR-66-33 Ta
 SOURCES = ("simulated", "analytical", "experimental")
 FT = units.parse("1 ft", "length")                           # m per ft
 FT_LB = units.parse("1 ft*lbf", "energy")                    # J per ft-lbf
-SRS_FREQUENCIES = default_frequencies(1.0, 1000.0)           # Hz, as `alightsize simulate`'s srs_xdd3.png
 # AFFDL-TR-66-33 List of Figures: drop -> (figure of XDD(1), the six run on to OMD(3); shock spectra)
 FIGURES = {1: (33, 39), 2: (40, 46), 3: (47, 53), 4: (54, 60), 5: (61, None), 6: (67, 73), 8: (74, 80),
            9: (81, 87), 10: (88, 94), 11: (95, 101)}
@@ -54,7 +53,8 @@ NO_TABLE = {
 }
 NOTES = (
     "Simulated stroke: the permanent set of each cell, its largest deflection less the spring-back "
-    "force / unloading rate (alightsize_sim/crush_cell.permanent_set); the report's analytical strokes are the permanent "
+    "force / unloading rate (alightsize_sim/crush_cell.permanent_set); the report's analytical strokes are the "
+    "permanent "
     "positions at the end of its simulation converted to absorber deflections (Sec. VI.D). The largest "
     "deflections are in drops.json (simulated_max_deflection_m).",
     "Simulated energy: the work each cell dissipated (crushing and damping). Analytical energy: the report's "
@@ -94,8 +94,8 @@ def run_drop(number: int, folder: Path = DROPS_DIR) -> Drop:
 @lru_cache(maxsize=None)
 def _run(number: int, folder: Path) -> Drop:
     """run_drop's cache, keyed by the resolved folder."""
-    cfg = read_scene(folder / f"drop{number:02d}.toml")
-    return Drop(number, cfg, simulate(cfg.scene, cfg.controls))
+    landing = land(read_scene(folder / f"drop{number:02d}.toml"))
+    return Drop(number, landing.config, landing.result)
 
 
 @lru_cache(maxsize=1)
@@ -114,7 +114,7 @@ def compare(drop: Drop) -> list[dict]:
     absorbed energy beside the analytical and experimental columns of Tables 6-13 (None without a table)."""
     table = _tables().get(drop.number)
     rows = []
-    for leg in summary(drop.cfg, drop.res)["legs"]:
+    for leg in LandingResult(drop.cfg, drop.res).summary["legs"]:
         for cell in leg["cells"]:
             row = {"leg": leg["leg"], "cell": cell["cell"], "simulated_stroke_m": cell["permanent_set_m"],
                    "simulated_max_deflection_m": cell["max_deflection_m"], "simulated_energy_J": cell["energy_J"]}
@@ -150,17 +150,18 @@ def drop_entry(drop: Drop) -> dict:
     """Everything drops.json holds for one drop (SI, unit-suffixed numeric fields)."""
     cfg, n = drop.cfg, drop.number
     table = _tables().get(n)
-    s = summary(cfg, drop.res)
+    landing = LandingResult(cfg, drop.res)
+    s = landing.summary
     rows = compare(drop)
     drop_energy = table["drop_energy_ft_lb"] * FT_LB if table else None
-    xdd = body_histories(cfg, drop.res)[0]
+    spectrum = landing.spectrum()
     return {"drop": n, "scene": cfg.name, "title": cfg.title, "table": table["table"] if table else None,
             "report_text": drop_tables.DROPS[n]["text"], "note": NO_TABLE.get(n),
             "outcome": s["outcome"], "reason": s["reason"], "t_end_s": s["t_end_s"],
             "drop_energy_J": drop_energy, "cells": rows, "totals": totals(rows, table, drop_energy),
             "peak": {k: s["peak"][k] for k in ("xdd_g", "omd_rad_s2")}, "energy": s["energy"],
-            "srs_xdd3": {"damping_rel": cfg.srs_damping, "frequency_Hz": SRS_FREQUENCIES.tolist(),
-                         "acceleration_g": srs(drop.res.t, xdd[:, 2], SRS_FREQUENCIES, cfg.srs_damping).tolist()}}
+            "srs_xdd3": {"damping_rel": cfg.srs_damping, "frequency_Hz": spectrum["frequency_Hz"].tolist(),
+                         "acceleration_g": spectrum["acceleration_g"].tolist()}}
 
 
 def closure(entries: list[dict]) -> dict:
@@ -266,69 +267,37 @@ def render(doc: dict, kind: str) -> str:
 
 # ------------------------------------------------------------------ plots
 def _save(fig, path: Path) -> Path:
-    write_atomic(path, lambda tmp: fig.savefig(tmp, format="png", dpi=100, metadata={"Software": None}))
+    write_atomic(path, lambda tmp: save_png(fig, tmp, 100))
     return path
 
 
 def plot_histories(drop: Drop, path: Path) -> Path:
     """XDD(1..3) (g) and OMD(1..3) (rad/s^2) in geometric body axes against time (cf. the report's Figs. 33-100)."""
-    xdd, omd = body_histories(drop.cfg, drop.res)
-    fig = Figure(figsize=(10, 7))
-    axes = fig.subplots(3, 2, sharex=True)
-    for k in range(3):
-        for col, (data, label) in enumerate(((xdd, f"XDD({k + 1}), g"), (omd, f"OMD({k + 1}), rad/s²"))):
-            axes[k, col].plot(drop.res.t, data[:, k], lw=0.9)
-            axes[k, col].set_ylabel(label)
-            axes[k, col].grid(alpha=0.3)
-    for ax in axes[-1]:
-        ax.set_xlabel("time, s")
+    xdd, omd = LandingResult(drop.cfg, drop.res).body()
     first = FIGURES[drop.number][0]
-    fig.suptitle(f"{drop.cfg.title}: simulated accelerations (cf. Figs. {first}-{first + 5})")
-    fig.subplots_adjust(wspace=0.3)
-    return _save(fig, path)
+    title = f"{drop.cfg.title}: simulated accelerations (cf. Figs. {first}-{first + 5})"
+    return _save(drop_histories_figure(drop.res.t, xdd, omd, title), path)
 
 
 def plot_srs(entry: dict, path: Path) -> Path:
     """Maximax shock response spectrum of XDD(3) (cf. the report's Shock Spectra Comparison figures)."""
     spec = entry["srs_xdd3"]
-    fig = Figure(figsize=(7, 4))
-    ax = fig.subplots()
-    ax.loglog(spec["frequency_Hz"], spec["acceleration_g"])
-    ax.set_xlabel("frequency, Hz")
-    ax.set_ylabel("maximax absolute acceleration, g")
     figure = FIGURES[entry["drop"]][1]
-    ax.set_title(f"{entry['title']}: shock spectrum of XDD(3), {spec['damping_rel']:.0%} damping"
-                 + (f" (cf. Fig. {figure})" if figure else ""))
-    ax.grid(alpha=0.3, which="both")
-    fig.subplots_adjust(bottom=0.14)
-    return _save(fig, path)
+    title = (f"{entry['title']}: shock spectrum of XDD(3), {spec['damping_rel']:.0%} damping"
+             + (f" (cf. Fig. {figure})" if figure else ""))
+    table = pd.DataFrame({"frequency_Hz": spec["frequency_Hz"], "acceleration_g": spec["acceleration_g"]})
+    return _save(srs_figure(table, spec["damping_rel"], title, layout=None), path)
 
 
 def plot_energy(doc: dict, path: Path) -> Path:
     """Total cell energy against the drop energy for every drop with a table, with the 1:1 line (Fig. 102)."""
     tabled = [e for e in doc["drops"] if e["table"] is not None]
-    x = np.array([e["drop_energy_J"] for e in tabled]) / FT_LB
-    fig = Figure(figsize=(6, 6))
-    ax = fig.subplots()
-    for src, marker, key, label in (("simulated", "o", "energy_J", "this simulation"),
-                                    ("analytical", "s", "printed_energy_J", "analytical (printed)"),
-                                    ("experimental", "^", "printed_energy_J", "experimental (printed)")):
-        y = np.array([e["totals"][src][key] for e in tabled]) / FT_LB
-        ax.scatter(x, y, marker=marker, label=label, facecolors="C0" if src == "simulated" else "none",
-                   edgecolors="C0" if src == "simulated" else "k")
-    for e, xi in zip(tabled, x):
-        ax.annotate(str(e["drop"]), (xi, e["totals"]["simulated"]["energy_J"] / FT_LB), fontsize=7,
-                    xytext=(4, -10), textcoords="offset points")
-    lim = (0.0, 1.1 * float(x.max()))
-    ax.plot(lim, lim, "k--", lw=0.8, label="1:1")
-    ax.set_xlim(lim)
-    ax.set_ylim(lim)
-    ax.set_xlabel("drop energy (Tables 6-13), ft-lb")
-    ax.set_ylabel("total cell energy, ft-lb")
-    ax.set_title("Comparison of energy absorption (cf. Fig. 102)")
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
-    return _save(fig, path)
+    table = pd.DataFrame({"drop": [e["drop"] for e in tabled],
+                          "drop_energy": [e["drop_energy_J"] / FT_LB for e in tabled],
+                          **{src: [e["totals"][src][key] / FT_LB for e in tabled]
+                             for src, key in (("simulated", "energy_J"), ("analytical", "printed_energy_J"),
+                                              ("experimental", "printed_energy_J"))}})
+    return _save(drop_energy_figure(table), path)
 
 
 def write_drop_report(out_dir: Path, folder: Path = DROPS_DIR) -> list[Path]:

@@ -6,27 +6,23 @@ import json
 from math import degrees
 from pathlib import Path
 
-import numpy as np
-from matplotlib.figure import Figure
+import pandas as pd
 from openpyxl import Workbook
-from openpyxl.styles import Font
-
-from alightsize_sim.articulated_statics import MEMBERS
 
 from alightsize.common.atomic import write_atomic
-from alightsize.loads.envelopes import Extreme, member_fields
-from alightsize.loads.quasi_static import LoadsResult, loads_json
+from alightsize.common.figures import save_png
+from alightsize.loads.envelopes import MEMBER_LABELS, Extreme
+from alightsize.loads.quasi_static import LoadsResult
 from alightsize.common.units import fmt, to_display, unit_label
 from alightsize import __version__
-from alightsize.reports.rendering import save_workbook, template_env
+from alightsize.reports.rendering import frame_sheet, save_workbook, template_env
 
-LABELS = {"PL1": "PL1, (PL3)", "PL2": "PL2, (PL6)", "PU1": "PU1, (PU2)", "R1213": "R12/13"}
-_META = {"Software": None}
+SCHEMA = "alightsize.loads/1"
 
 
 def label(member: str) -> str:
     """Member label as the tables print it (mirror-image members in parentheses)."""
-    return LABELS.get(member, member)
+    return MEMBER_LABELS.get(member, member)
 
 
 def _row(e: Extreme | None, system: str, with_config: bool) -> dict | None:
@@ -34,7 +30,8 @@ def _row(e: Extreme | None, system: str, with_config: bool) -> dict | None:
         return None
     a, b, p = (degrees(x) for x in e.at)
     return {"load": to_display(e.value, "force", system), "text": fmt(e.value, "force", system),
-            "alpha": f"{a:.1f}", "beta": f"{b:+.0f}" if abs(b) > 1e-9 else "0", "psi": f"{p:+.0f}" if abs(p) > 1e-9 else "0",
+            "alpha": f"{a:.1f}", "beta": f"{b:+.0f}" if abs(b) > 1e-9 else "0",
+            "psi": f"{p:+.0f}" if abs(p) > 1e-9 else "0",
             "configuration": e.configuration if with_config else ""}
 
 
@@ -83,64 +80,65 @@ def context(res: LoadsResult, system: str, heatmaps: list[str] | None = None,
             "heatmaps": [f"heatmap_{n}.png" for n in names]}
 
 
+def envelope_frame(table: dict, system: str) -> pd.DataFrame:
+    """One envelope of `tables` as the workbook shows it: a row per member and sense, the member named on its
+    first row, the load in the display unit, alpha, beta, psi in degrees (and the configuration of a
+    combination)."""
+    rows = []
+    for r in table["rows"]:
+        for k, sense in enumerate(("tension", "compression")):
+            e = r[sense]
+            if e is not None:
+                rows.append([r["member"] if k == 0 or r["tension"] is None else "", round(e["load"]),
+                             float(e["alpha"]), float(e["beta"]), float(e["psi"])]
+                            + ([e["configuration"]] if table["combined"] else []))
+    return pd.DataFrame(rows, dtype=object, columns=["Member", f"Load ({unit_label('force', system)})", "alpha (deg)",
+                                                     "beta (deg)", "psi (deg)"]
+                        + (["Configuration"] if table["combined"] else []))
+
+
 def write_workbook(res: LoadsResult, path: Path, system: str) -> None:
-    """One sheet per configuration and per combination, laid out like Tables 14-22; user text is always a
-    string cell (never a formula)."""
+    """One sheet per configuration and per combination, laid out like Tables 14-22, and the telescoping free
+    body; user text is always a string cell (never a formula)."""
     wb = Workbook()
     wb.remove(wb.active)
-    unit = unit_label("force", system)
     for t in tables(res, system):
-        ws = wb.create_sheet(t["name"])
-        ws.append([t["title"]])
-        ws["A1"].font = Font(bold=True)
-        ws.append(["Member", f"Load ({unit})", "alpha (deg)", "beta (deg)", "psi (deg)"]
-                  + (["Configuration"] if t["combined"] else []))
-        for r in t["rows"]:
-            for k, sense in enumerate(("tension", "compression")):
-                e = r[sense]
-                if e is None:
-                    continue
-                row = [r["member"] if k == 0 or r["tension"] is None else "", round(e["load"]), float(e["alpha"]),
-                       float(e["beta"]), float(e["psi"])] + ([e["configuration"]] if t["combined"] else [])
-                ws.append(row)
-                for c in ws[ws.max_row]:
-                    if isinstance(c.value, str):
-                        c.data_type = "s"
+        frame_sheet(wb, t["name"], envelope_frame(t, system), t["title"])
     if res.telescoping is not None:
-        ws = wb.create_sheet("telescoping")
-        ws.append(["Telescoping leg free body (App. III)"])
-        ws.append(["Load", "Value", "Unit"])
-        for r in telescoping_rows(res, system):
-            ws.append([r["name"], round(r["number"], 3), r["unit"]])
+        free_body = pd.DataFrame([[r["name"], round(r["number"], 3), r["unit"]] for r in telescoping_rows(res, system)],
+                                 columns=["Load", "Value", "Unit"], dtype=object)
+        frame_sheet(wb, "telescoping", free_body, "Telescoping leg free body (App. III)")
     save_workbook(wb, path)
 
 
 def heatmap(res: LoadsResult, case_name: str, path: Path, system: str) -> None:
-    """Each member's load over alpha-beta at the psi of its largest magnitude."""
-    case = next(c for c in res.config.cases if c.name == case_name)
-    (psi, alpha, beta), fields = member_fields(case, res.config.grid)
-    fig = Figure(figsize=(17, 6.5), layout="constrained")
-    axes = fig.subplots(2, 5, sharex=True, sharey=True)
-    a, b = np.degrees(alpha), np.degrees(beta)
-    extent = (a[0], a[-1], b[0], b[-1])
-    bottomed = False
-    for ax, m in zip(axes.flat, MEMBERS):
-        f = to_display(np.asarray(fields[m]), "force", system)      # NaN where a cell has bottomed
-        k = int(np.unravel_index(np.nanargmax(np.abs(f)), f.shape)[0])
-        lim = float(np.nanmax(np.abs(f[k]))) or 1.0
-        bottomed |= bool(np.isnan(f[k]).any())
-        ax.set_facecolor("0.8")
-        im = ax.imshow(f[k].T, origin="lower", extent=extent, aspect="auto", cmap="RdBu_r", vmin=-lim, vmax=lim,
-                       interpolation="nearest")
-        ax.set_title(f"{label(m)} at psi = {np.degrees(psi[k]):+.0f} deg", fontsize=9)
-        fig.colorbar(im, ax=ax)
-    for ax in axes[1]:
-        ax.set_xlabel("alpha (deg)")
-    for ax in axes[:, 0]:
-        ax.set_ylabel("beta (deg)")
-    fig.suptitle(f"Configuration {case_name}: member loads, {unit_label('force', system)} (tension +), over alpha-beta "
-                 "at the governing psi" + ("; grey: a cell has bottomed" if bottomed else ""))
-    fig.savefig(path, format="png", dpi=72, metadata=_META)
+    """The heat map of configuration `case_name` (LoadsResult.plot) as a PNG."""
+    save_png(res.plot(case_name, system), path, 72)
+
+
+def _extreme_json(row: pd.Series, key: str, combined: bool) -> dict:
+    if pd.isna(row[f"{key}_N"]):
+        return {f"{key}_N": None, f"{key}_at_deg": None}
+    out = {f"{key}_N": float(row[f"{key}_N"]),
+           f"{key}_at_deg": [float(row[f"{key}_{ax}_deg"]) for ax in ("alpha", "beta", "psi")]}
+    if combined:
+        out[f"{key}_configuration"] = row[f"{key}_configuration"]
+    return out
+
+
+def loads_json(res: LoadsResult) -> dict:
+    """max_member_loads.json (docs/contracts.md, alightsize.loads/1) from the result's tables."""
+    tables = res.to_pandas()
+    confs: dict[str, list] = {}
+    for _, r in tables["envelopes"].iterrows():
+        confs.setdefault(r["envelope"], []).append({"member": r["member"],
+                                                    **_extreme_json(r, "tension", r["combined"]),
+                                                    **_extreme_json(r, "compression", r["combined"])})
+    out = {"schema": SCHEMA, "title": res.config.title, "configurations": confs,
+           "combined": {k: list(v) for k, v in res.combined.items()}}
+    if "telescoping" in tables:
+        out["telescoping"] = {k: float(v) for k, v in tables["telescoping"].iloc[0].items()}
+    return out
 
 
 def write_loads(res: LoadsResult, out: Path, system: str | None = None) -> list[Path]:

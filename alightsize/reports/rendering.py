@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import datetime
 import io
+import json
 import re
 import zipfile
 from pathlib import Path
@@ -44,6 +45,18 @@ def template_env(autoescape: bool) -> jinja2.Environment:
     return env
 
 
+def json_value(value):
+    """A table cell as JSON holds it: NaN and None as null, numpy scalars as Python numbers."""
+    if isinstance(value, np.generic):
+        value = value.item()
+    return None if isinstance(value, float) and not np.isfinite(value) else value
+
+
+def json_records(frame: pd.DataFrame) -> list[dict]:
+    """A table as a JSON list of objects, one per row, column names as keys."""
+    return [{k: json_value(v) for k, v in row.items()} for row in frame.to_dict("records")]
+
+
 def text_cell(cell, value) -> None:
     """Put user text in a cell as text, never as a formula."""
     cell.value = value
@@ -51,18 +64,25 @@ def text_cell(cell, value) -> None:
         cell.data_type = "s"
 
 
-def frame_sheet(wb: Workbook, title: str, frame: pd.DataFrame) -> None:
-    """`frame` as a new sheet: a bold header, numbers as numbers (NaN and None as empty cells), text as text."""
+def frame_sheet(wb: Workbook, title: str, frame: pd.DataFrame, heading: str | None = None) -> None:
+    """`frame` as a new sheet: a bold header (below a bold `heading` line, if given), numbers as numbers (NaN and
+    None as empty cells), text as text, a list or mapping as its JSON text."""
     ws = wb.create_sheet(title)
-    ws.append([str(c) for c in frame.columns])
-    for c in ws[1]:
-        c.font = Font(bold=True)
-    for r, row in enumerate(frame.itertuples(index=False), start=2):
+    if heading is not None:
+        text_cell(ws.cell(1, 1), heading)
+        ws.cell(1, 1).font = Font(bold=True)
+    top = 1 + (heading is not None)
+    for j, name in enumerate(frame.columns, start=1):
+        text_cell(ws.cell(top, j), str(name))
+        ws.cell(top, j).font = Font(bold=True)
+    for r, row in enumerate(frame.itertuples(index=False), start=top + 1):
         for c, value in enumerate(row, start=1):
             if isinstance(value, (float, np.floating)) and not np.isfinite(value):
                 value = None
+            elif isinstance(value, (list, tuple, dict)):
+                value = json.dumps(value)                    # a list in one cell, as JSON text
             text_cell(ws.cell(r, c), value.item() if isinstance(value, np.generic) else value)
-    for col in ws.columns:
+    for col in ws.iter_cols(min_row=top):
         ws.column_dimensions[col[0].column_letter].width = max(12, max(len(str(c.value or "")) for c in col) + 2)
 
 

@@ -15,8 +15,8 @@ from alightsize import __version__
 from alightsize.common.atomic import write_atomic
 from alightsize.common.units import registry
 from alightsize.reports.design_report import _png, write_design
-from alightsize.reports.rendering import save_workbook, template_env, text_cell
-from alightsize.synthesis.search import SynthesisResult, convergence
+from alightsize.reports.rendering import frame_sheet, save_workbook, template_env
+from alightsize.synthesis.search import SynthesisResult
 
 SCHEMA = "alightsize.synthesis/1"
 
@@ -41,7 +41,8 @@ def bounding(res: SynthesisResult) -> list[dict]:
                for i in (1, 2, 3)]
     figures += [(f"XDD({i}) onset", f"peak_onset_xdd{i}_g_s", "g/s",
                  crit.max_onset_g_s[i - 1] if crit and crit.max_onset_g_s else None) for i in (1, 2, 3)]
-    figures += [("largest cell stroke", "max_stroke_m", "m", None), ("largest footpad force", "max_ground_force_N", "N", None)]
+    figures += [("largest cell stroke", "max_stroke_m", "m", None),
+                ("largest footpad force", "max_ground_force_N", "N", None)]
     for name, col, unit, limit in figures:
         worst = max(rows, key=lambda r: r[col] or 0.0)
         out.append({"figure": name, "landing": worst["run_id"], "value": f"{worst[col]:.4g} {unit}",
@@ -97,7 +98,7 @@ def document(res: SynthesisResult) -> dict:
         "search_rates": [r.as_json() for r in res.rates], "start_rates": [r.as_json() for r in res.start_rates],
         "check": {"samples": len(res.check_rows), "seed": res.spec.check_seed,
                   "rates": [r.as_json() for r in res.check_rates]},
-        "convergence": convergence(res.history),
+        "convergence": res.convergence(),
         "trade": {axis: [{f"limit_{'rad' if axis == 'slope' else 'm_s'}": p.value, "label": p.label,
                           "feasible": p.best.feasible, "weight_fraction": p.best.fraction, "x_si": list(p.best.x)}
                          for p in pts] for axis, pts in res.trade.items()},
@@ -130,7 +131,8 @@ def _context(res: SynthesisResult) -> dict:
         "verdict": (f"the lightest feasible system found weighs {_pct(frac)} of the capsule "
                     f"(start {_pct(res.start.fraction)}{', infeasible' if not res.start.feasible else ''})"
                     if res.best.feasible else "no candidate met every criterion within the bounds"),
-        "goal": None if goal is None else f"{100 * goal:.2f} % ({'met' if frac is not None and frac <= goal else 'not met'})",
+        "goal": None if goal is None
+        else f"{100 * goal:.2f} % ({'met' if frac is not None and frac <= goal else 'not met'})",
         "parameters": [{"key": p.key, "bounds": f"{p.show(p.low)} – {p.show(p.high)}", "start": p.show(s),
                         "chosen": p.show(c)} for p, s, c in zip(free, res.start.x, res.best.x)],
         "weights": {"start": f"{res.start.weight_kg:.4g} kg" if res.start.weight_kg else "–",
@@ -139,7 +141,7 @@ def _context(res: SynthesisResult) -> dict:
         "criteria": [{"start": _rate(a), "chosen": _rate(b), "check": _rate(c)}
                      for a, b, c in zip(res.start_rates, res.rates, res.check_rates or res.rates)],
         "check_samples": len(res.check_rows), "check_seed": res.spec.check_seed,
-        "members": _members(res), "convergence": convergence(res.history),
+        "members": _members(res), "convergence": res.convergence(),
         "bounding": bounding(res),
         "trade": {axis: [{"label": _trade_label(axis, p.value), "feasible": p.best.feasible,
                           "weight": _pct(p.best.fraction) if p.best.feasible else "no feasible design",
@@ -156,17 +158,11 @@ def plot_names(res: SynthesisResult) -> list[str]:
 
 
 def write_workbook(res: SynthesisResult, path: Path) -> None:
+    """One sheet per table of the result (`to_pandas`)."""
     wb = Workbook()
     wb.remove(wb.active)
     for name, frame in res.to_pandas().items():
-        ws = wb.create_sheet(name)
-        for j, col in enumerate(frame.columns, start=1):
-            text_cell(ws.cell(1, j), str(col))
-        for i, row in enumerate(frame.itertuples(index=False), start=2):
-            for j, v in enumerate(row, start=1):
-                if isinstance(v, float) and not isfinite(v):
-                    v = None                               # pandas' NaN for a value that does not exist
-                text_cell(ws.cell(i, j), v if not isinstance(v, (list, dict, tuple)) else json.dumps(v))
+        frame_sheet(wb, name, frame)
     save_workbook(wb, path)
 
 
@@ -175,9 +171,10 @@ def write_synthesis(res: SynthesisResult, out: str | Path) -> list[Path]:
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     ctx = _context(res)
+    md, html = template_env(False), template_env(True)
     files = [write_atomic(out / "synthesis.json", json.dumps(document(res), indent=2, allow_nan=False) + "\n"),
-             write_atomic(out / "report.md", template_env(False).get_template("synthesis_report.md.j2").render(**ctx)),
-             write_atomic(out / "report.html", template_env(True).get_template("synthesis_report.html.j2").render(**ctx)),
+             write_atomic(out / "report.md", md.get_template("synthesis_report.md.j2").render(**ctx)),
+             write_atomic(out / "report.html", html.get_template("synthesis_report.html.j2").render(**ctx)),
              write_atomic(out / "synthesis.xlsx", lambda p: write_workbook(res, p))]
     for name in plot_names(res):
         kind = name[:-4].removeprefix("trade_")

@@ -68,6 +68,10 @@ class SynthesisResult:
                 best_g = e.peak_g
         return out
 
+    def convergence(self) -> list[dict]:
+        """The best feasible candidate after each generation (synthesis.evaluate.convergence)."""
+        return convergence(self.history)
+
     def to_pandas(self) -> dict[str, pd.DataFrame]:
         """"candidates" (every evaluation, SI), "convergence" (best feasible per generation), "trade" and
         "check" (pass rates of the winner on the fresh sample)."""
@@ -76,22 +80,26 @@ class SynthesisResult:
                               "weight_kg": e.weight_kg, "weight_fraction": e.fraction, "objective": e.objective,
                               "landings": e.landings, "failing": e.failing, "peak_g": e.peak_g}
                              for g, e in self.history])
-        return {"candidates": cand, "convergence": pd.DataFrame(convergence(self.history)),
+        return {"candidates": cand, "convergence": pd.DataFrame(self.convergence()),
                 "trade": pd.DataFrame([{"axis": p.axis, "value": p.value, "label": p.label,
                                         "feasible": p.best.feasible, "weight_fraction": p.best.fraction,
                                         **dict(zip(names, p.best.x))} for pts in self.trade.values() for p in pts]),
                 "check": pd.DataFrame([r.as_json() for r in self.check_rates])}
 
     def plot(self, kind: str = "convergence"):
-        """A matplotlib Figure: "convergence", "pareto", or a trade axis ("horizontal_speed", "slope")."""
-        from alightsize.synthesis import plots
-        if kind == "convergence":
-            return plots.convergence_figure(self)
-        if kind == "pareto":
-            return plots.pareto_figure(self)
-        if kind in self.trade:
-            return plots.trade_figure(self, kind)
-        raise ValueError(f"plot kind {kind!r}: expected convergence, pareto or one of {', '.join(self.trade)}")
+        """A matplotlib Figure: "convergence", "pareto", or a trade axis ("horizontal_speed", "slope"), drawn from
+        `to_pandas()`."""
+        from alightsize.common import figures
+        t = self.to_pandas()
+        cand = t["candidates"]
+        front = pd.DataFrame([{"peak_g": e.peak_g, "weight_fraction": e.fraction} for e in self.pareto()],
+                             columns=["peak_g", "weight_fraction"])
+        draw = figures.pick({"convergence": lambda: figures.convergence_figure(cand, t["convergence"]),
+                             "pareto": lambda: figures.pareto_figure(cand[cand["feasible"].astype(bool)
+                                                                          & cand["peak_g"].notna()], front),
+                             **{axis: lambda a=axis: figures.trade_figure(t["trade"][t["trade"]["axis"] == a], a)
+                                for axis in self.trade}}, kind)
+        return draw()
 
 
 def _zero(x) -> float:

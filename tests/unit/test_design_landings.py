@@ -10,7 +10,7 @@ import pytest
 
 from alightsize.pipeline.config import prepare, read_design
 from alightsize.common.errors import InputError
-from alightsize.pipeline.landings import LANDING, quasi_static_load
+from alightsize.pipeline.landings import LANDING
 
 from conftest import EXAMPLES
 
@@ -38,7 +38,7 @@ def test_each_check_takes_the_larger_of_sweep_and_landings(design):
                  "magnitude": ("tension_N", "compression_N")}
     governed_by_landing = 0
     for ref in design.load_refs:
-        qs = quasi_static_load(design.landings, ref.envelope, ref.member, ref.sense) or 0.0
+        qs = design.landings.quasi_static_load(ref.envelope, ref.member, ref.sense) or 0.0
         landing = max(abs(d[k]) for r in design.landings.rows for d in json.loads(r["member_loads_json"])
                       if d["member"] == ref.member for k in sense_key[ref.sense] if d[k] is not None)
         assert ref.value == pytest.approx(max(qs, landing) * ref.factor, rel=1e-12)

@@ -116,14 +116,15 @@ def test_heat_map_colorbars_stay_off_the_next_panel(tmp_path, monkeypatch):
 def test_landing_plots_keep_their_labels_and_a_short_legend(tmp_path, monkeypatch):
     """The shock spectrum's axis labels are inside the picture; the stroke plot's legend names legs and cell
     kinds (not every cell of every leg) and sits beside the plot, not over it."""
-    from alightsize.landings.output import plots
+    from alightsize.landings.output import LandingResult
+    from alightsize.reports.landing_report import plots
     from alightsize.model.scene_config import read_scene
     from alightsize_sim.landing import simulate
     from conftest import EXAMPLES
     cfg = read_scene(EXAMPLES / "scenes" / "telescoping_config2.toml")
     res = simulate(cfg.scene, cfg.controls)
     figs = _kept(monkeypatch)
-    names = [p.name for p in plots(cfg, res, tmp_path)]
+    names = [p.name for p in plots(LandingResult(cfg, res), tmp_path)]
     for fig in figs:
         _inside_and_apart(fig)
     strokes = figs[names.index("strokes.png")]
@@ -134,15 +135,15 @@ def test_landing_plots_keep_their_labels_and_a_short_legend(tmp_path, monkeypatc
     assert box.x0 >= plot.x1 or box.y0 >= plot.y1 or box.x1 <= plot.x0
 
 
-def test_sweep_axes_are_the_parameters_as_written(tmp_path, monkeypatch):
+def test_sweep_axes_are_the_parameters_as_written():
     """A grid written in ft/s and deg is plotted in ft/s and deg, labelled with the scene key."""
     import json
-    from alightsize.reports.sweep_report import boundary_plot
+    from alightsize.common.figures import boundary_figure
+    from alightsize.landings.outcomes import boundary_points
     rows = [{"params_json": json.dumps({"initial.velocity[1]": f"{v} ft/s", "terrain.slope": f"{a} deg"}),
              "outcome": "stable" if v < 10 else "tipped"} for v in (5, 10, 15) for a in (-10, 10)]
-    figs = _kept(monkeypatch)
-    boundary_plot(rows, ("initial.velocity[1]", "terrain.slope"), tmp_path / "b.png")
-    ax = figs[0].axes[0]
+    fig = boundary_figure(*boundary_points(rows, ("initial.velocity[1]", "terrain.slope")))
+    ax = fig.axes[0]
     assert ax.get_xlabel() == "initial.velocity[1] (ft/s)" and ax.get_ylabel() == "terrain.slope (deg)"
     xy = ax.collections[0].get_offsets()
     assert sorted(set(xy[:, 0])) == [5, 10, 15] and sorted(set(xy[:, 1])) == [-10, 10]

@@ -10,7 +10,8 @@ from scipy.optimize import brentq
 
 from alightsize.checks.sizing import size_item
 from alightsize.pipeline.config import prepare, read_design
-from alightsize.pipeline.design import run_design, summary_json
+from alightsize.pipeline.design import run_design
+from alightsize.reports.design_report import summary_json
 
 IN, PSI, LBF, LB = 0.0254, 6894.757293168361, 4.4482216152605, 0.45359237
 FCY, E, M = 69000 * PSI, 10e6 * PSI, 3.33          # 7178-T6 (materials/7178-t6.toml): Fcy, E, Roark's m = 1/nu
