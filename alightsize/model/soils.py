@@ -9,6 +9,7 @@ from pathlib import Path
 from alightsize_sim.soil import Soil
 
 from alightsize.common.config import Node, is_file, load_toml
+from alightsize.common.errors import InputError
 from alightsize.common.resources import data_dir
 
 _UNITS = {"k_c": "N/m^(n+1)", "k_phi": "N/m^(n+2)", "c": "Pa", "gamma": "N/m^3"}   # SI base unit of each key
@@ -63,13 +64,13 @@ def soil_presets() -> dict[str, Soil]:
     return {p.stem: read_soil(p) for p in sorted((data_dir("materials") / "soils").glob("*.toml"))}
 
 
-def find_soil(node: Node, key: str, base: Path) -> Soil:
+def find_soil(name: str, base: Path, file: str, key: str) -> Soil:
     """The soil a scene names at `key`: a preset's name or a soil file's path (relative to `base`)."""
-    name = node.string(key)
     presets = soil_presets()
     if name in presets:
         return presets[name]
     path = base / name
     if not is_file(path):
-        raise node.error(key, "a shipped soil (" + ", ".join(sorted(presets)) + ") or a soil file's path", repr(name))
+        raise InputError(file, key, "a shipped soil (" + ", ".join(sorted(presets)) + ") or a soil file's path",
+                         repr(name))
     return read_soil(path)

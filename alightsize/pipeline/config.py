@@ -70,11 +70,11 @@ def read_items(nodes: tuple[Node, ...], mats: dict[str, Material], required: flo
     return items
 
 
-def read_design(path: str | Path) -> DesignSpec:
-    """Read and validate a design config; any problem is an InputError naming file and key path. Nothing is
-    computed: the envelopes and landing cases it names run in `prepare`."""
+def read_design(path: str | Path, root: Node | None = None) -> DesignSpec:
+    """Read and validate a design config (or its TOML `root`, already loaded); any problem is an InputError naming
+    file and key path. Nothing is computed: the envelopes and landing cases it names run in `prepare`."""
     path = Path(path)
-    root = load_toml(path)
+    root = load_toml(path) if root is None else root
     d = root.table("design")
     configuration = d.string("configuration")
     title = d.string("title", configuration)

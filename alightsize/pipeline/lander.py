@@ -17,12 +17,13 @@ from __future__ import annotations
 import itertools
 from dataclasses import dataclass, replace
 from functools import partial
-from math import degrees, pi
+from math import degrees
 from pathlib import Path
 
 from alightsize_sim.telescoping_leg import TelescopingLeg as SimTelescopingLeg
 
 from alightsize.common.config import SEED_MAX, Node, load_toml
+from alightsize.common.typed import validate
 from alightsize.landings.criteria import Criteria, read_criteria
 from alightsize.landings.dispersions import Dispersion
 from alightsize.landings.study import Run, Study, _sampled
@@ -31,9 +32,9 @@ from alightsize.loads.envelopes import default_grid
 from alightsize.loads.histories import dynamic_envelope, telescoping_dynamic_envelope
 from alightsize.loads.quasi_static import TELESCOPING, validate_references
 from alightsize.loads.telescoping import TelescopingLeg
-from alightsize.model.gravity import read_gravity
+from alightsize.model.envelope import Envelope
 from alightsize.model.materials import library, material_paths
-from alightsize.model.scene_config import LANDER_ONLY, SceneConfig, read_scene
+from alightsize.model.scene_config import LANDER_ONLY, SceneConfig, SceneDocument, SceneHead, lander_scene, read_scene
 from alightsize.pipeline.config import UNIT_SYSTEMS, DesignSpec, read_design, read_items
 from alightsize.pipeline.landings import LandingSpec
 from alightsize.checks.rules import DEFAULT_RULES, RULES
@@ -43,21 +44,6 @@ from alightsize.pipeline.members import member_item
 SCENE_TABLES = ("capsule", "cells", "legs", "terrain", "initial", "controls", "output")
 ALL_CONFIGURATIONS = "all"           # the combined envelope of App. III cell variants when none is named
 DEFAULT_SAMPLES = 100                # Monte Carlo landings: about a minute on 2 cores (docs/notes)
-
-
-@dataclass(frozen=True)
-class Envelope:
-    """Impact envelope, SI: (low, high) descent and horizontal speeds; signed (low, high) slope (negative: the
-    velocity heads into the slope) and inclination (positive: leaning toward the velocity); the Monte Carlo's
-    heading range; largest roll rate (either sign); footpad friction range (None: the scene's terrain)."""
-
-    vertical: tuple[float, float]
-    horizontal: tuple[float, float]
-    slope: tuple[float, float]
-    inclination: tuple[float, float]
-    roll_rate: float
-    friction: tuple[float, float] | None
-    heading: tuple[float, float] = (-pi, pi)
 
 
 @dataclass(frozen=True)
@@ -74,77 +60,17 @@ class Requirements:
 
 @dataclass(frozen=True)
 class Lander:
-    """A lander as read: its design (`spec`, what `alightsize.design` runs), its nominal landing scene and its
-    requirements."""
+    """A lander as read: its design (`spec`, what `alightsize.design` runs), its nominal landing scene (and the
+    scene document its landing cases vary) and its requirements."""
 
     spec: DesignSpec
     scene: SceneConfig
     requirements: Requirements
+    document: SceneDocument
 
     @property
     def study(self) -> Study:
         return self.spec.landings.study
-
-
-def is_lander(path: str | Path) -> bool:
-    """Whether a TOML file is a lander file (it has a [lander] table)."""
-    return "lander" in load_toml(path).data
-
-
-def _range(node: Node, key: str, dim: str, default: tuple[float, float] | None) -> tuple[float, float] | None:
-    """A value or a [low, high] range; a single value v is the range (v, v)."""
-    if not node.has(key):
-        return default
-    raw = node.raw(key)
-    if isinstance(raw, list):
-        if len(raw) != 2:
-            raise node.error(key, "a value or a [low, high] range", repr(raw))
-        lo, hi = (node.parse_quantity(f"{key}[{i}]", v, dim, positive=False) for i, v in enumerate(raw))
-    else:
-        lo = hi = node.parse_quantity(key, raw, dim, positive=False)
-    if lo < 0 or hi < lo:
-        raise node.error(key, "0 <= low <= high", repr(raw))
-    return lo + 0.0, hi + 0.0          # "-0 m/s" as 0 (numpy's uniform refuses a high of -0.0 over a low of 0.0)
-
-
-def _signed(node: Node, key: str, limit: float) -> tuple[float, float]:
-    """An angle range: a largest magnitude v (either sign: (-v, v)) or a signed [low, high] range."""
-    if not node.has(key):
-        return 0.0, 0.0
-    raw = node.raw(key)
-    if isinstance(raw, list):
-        if len(raw) != 2:
-            raise node.error(key, "a largest magnitude or a signed [low, high] range", repr(raw))
-        lo, hi = (node.parse_quantity(f"{key}[{i}]", v, "angle", positive=False) for i, v in enumerate(raw))
-    else:
-        hi = node.quantity(key, "angle", 0.0, positive=False)
-        if hi < 0:
-            raise node.error(key, "a largest magnitude (either sign is landed) or a signed [low, high] range",
-                             "a negative value")
-        lo = -hi
-    if not (lo <= hi and max(abs(lo), abs(hi)) < limit):
-        raise node.error(key, f"low <= high, each within +-{degrees(limit):.0f} deg (exclusive)", repr(raw))
-    return lo, hi
-
-
-def _envelope(node: Node) -> Envelope:
-    node.allow(("vertical_speed", "horizontal_speed", "slope", "inclination", "heading", "roll_rate", "friction",
-                "note"))
-    vertical = _range(node, "vertical_speed", "velocity", None)
-    if vertical is None or vertical[1] <= 0:
-        raise node.error("vertical_speed", "a descent speed above 0, or a [low, high] range",
-                         repr(node.raw("vertical_speed", None)))
-    horizontal = _range(node, "horizontal_speed", "velocity", (0.0, 0.0))
-    slope = _signed(node, "slope", pi / 2)
-    incl = _signed(node, "inclination", pi)
-    heading = _signed(node, "heading", 2 * pi) if node.has("heading") else (-pi, pi)
-    rate = node.quantity("roll_rate", "angular_velocity", 0.0, positive=False) if node.has("roll_rate") else 0.0
-    if rate < 0:
-        raise node.error("roll_rate", "a largest magnitude (either sign is landed)", "a negative value")
-    friction = _range(node, "friction", "dimensionless", None)
-    node.string("note", "")
-    node.finish()
-    return Envelope(vertical, horizontal, slope, incl, rate, friction, heading)
 
 
 def _requirements(node: Node) -> Requirements:
@@ -156,7 +82,8 @@ def _requirements(node: Node) -> Requirements:
     if goal is not None and not 0 < goal < 1:
         raise node.error("weight_goal", "the leg system's weight as a fraction of the capsule, in (0, 1)", repr(goal))
     criteria = read_criteria(node.table("criteria", optional=True)) or Criteria(None, None)
-    envelope = _envelope(node.table("envelope"))
+    env = node.table("envelope")
+    envelope = validate(Envelope, env.data, env.file, env.path)
     mc = node.table("monte_carlo", optional=True)
     samples, seed, scatter = DEFAULT_SAMPLES, 1, 0.0
     if mc:
@@ -175,15 +102,15 @@ def _q(x: float, unit: str) -> str:
     return f"{x:.12g} {unit}"
 
 
-def landing_cases(path: Path, name: str, req: Requirements, legs: int, base: dict | None = None) -> Study:
+def landing_cases(scene: SceneDocument, name: str, req: Requirements, legs: int, base: dict | None = None) -> Study:
     """The envelope's corners (each range at both ends, a slope or inclination magnitude and the roll rate at
     either sign, a leg leading or two legs straddling the velocity) and `samples` seeded Monte Carlo landings drawn
     uniformly over the envelope (heading, roll and, with cell_scatter, every cell's crushing force as well); every
     run lands the lander file's scene with the overrides `base` (a design variant) under its own."""
     base = dict(base or {})
     e = req.envelope
-    axes: dict[str, list] = {"initial.velocity[2]": [_q(-v, "m/s") for v in sorted(set(e.vertical))],
-                             "initial.velocity[1]": [_q(h, "m/s") for h in sorted(set(e.horizontal))],
+    axes: dict[str, list] = {"initial.velocity[2]": [_q(-v, "m/s") for v in sorted(set(e.vertical_speed))],
+                             "initial.velocity[1]": [_q(h, "m/s") for h in sorted(set(e.horizontal_speed))],
                              "initial.roll": ["0.0 deg", _q(180.0 / legs, "deg")]}
     signed = (("terrain.slope", tuple(map(degrees, e.slope)), "deg"),
               ("initial.inclination", tuple(map(degrees, e.inclination)), "deg"),
@@ -201,8 +128,8 @@ def landing_cases(path: Path, name: str, req: Requirements, legs: int, base: dic
     width = len(str(len(combos)))
     points = [(f"corner-{n + 1:0{width}d}", "lander", {**fixed, **dict(zip(axes, c))}, dict(zip(axes, c)), None)
               for n, c in enumerate(combos)]
-    disp = [Dispersion("initial.velocity[2]", "uniform", (-e.vertical[1], -e.vertical[0]), "m/s", False),
-            Dispersion("initial.velocity[1]", "uniform", e.horizontal, "m/s", False),
+    disp = [Dispersion("initial.velocity[2]", "uniform", (-e.vertical_speed[1], -e.vertical_speed[0]), "m/s", False),
+            Dispersion("initial.velocity[1]", "uniform", e.horizontal_speed, "m/s", False),
             Dispersion("initial.heading", "uniform", tuple(map(degrees, e.heading)), "deg", False),
             Dispersion("initial.roll", "uniform", (0.0, 360.0 / legs), "deg", False)]
     disp += [Dispersion(key, "uniform", (lo, hi), unit, False) for key, (lo, hi), unit in signed if lo != hi]
@@ -210,13 +137,14 @@ def landing_cases(path: Path, name: str, req: Requirements, legs: int, base: dic
         disp.append(Dispersion("terrain.mu_dynamic", "uniform", e.friction, "", False))
     if req.cell_scatter > 0:
         disp.append(Dispersion("legs.cell_factors", "normal", (1.0, req.cell_scatter), "", True))
-    runs = [Run(*p[:2], path, *p[2:]) for p in points]
+    runs = [Run(*p[:2], scene, *p[2:]) for p in points]
     if req.samples:
         base = [("mc", "lander", dict(fixed), {}, None)]
-        runs += [Run(rid, skey, path, over, params, ref)
-                 for rid, skey, over, params, ref in _sampled(base, disp, req.samples, req.seed, {"lander": path})]
+        runs += [Run(rid, skey, scene, over, params, ref)
+                 for rid, skey, over, params, ref in _sampled(base, disp, req.samples, req.seed, {"lander": scene})]
     plot = ("initial.velocity[1]", "initial.velocity[2]")
-    return Study(path, name, f"Landing cases of {name}: {len(combos)} envelope corners, {req.samples} Monte Carlo",
+    title = f"Landing cases of {name}: {len(combos)} envelope corners, {req.samples} Monte Carlo"
+    return Study(scene.path, name, title,
                  tuple(runs), req.criteria, tuple(k for k in axes if k != "initial.velocity[2]"), "initial.velocity[2]",
                  False, req.seed, plot)
 
@@ -301,12 +229,12 @@ def _crushable(node: Node, root: Node, mats: dict) -> Node:
     return Node(node.file, node.path, {**node.data, "weight": prism}, root.context)
 
 
-def read_lander(path: str | Path, overrides: dict | None = None) -> Lander:
-    """Read and validate a lander file, with `overrides` (dotted key path -> TOML value, e.g.
-    {"legs.radius": "2 m"}) applied first; any problem is an InputError naming file, key path, what was
-    expected and what was found. Nothing is computed (`alightsize.design` runs the analyses)."""
+def read_lander(path: str | Path, overrides: dict | None = None, root: Node | None = None) -> Lander:
+    """Read and validate a lander file (or its TOML `root`, already loaded), with `overrides` (dotted key path ->
+    TOML value, e.g. {"legs.radius": "2 m"}) applied first; any problem is an InputError naming file, key path,
+    what was expected and what was found. Nothing is computed (`alightsize.design` runs the analyses)."""
     path = Path(path)
-    root = load_toml(path)
+    root = load_toml(path) if root is None else root
     for key, value in (overrides or {}).items():
         root.set_path(key, value)
     scene_over = {k: v for k, v in (overrides or {}).items() if k.split(".")[0] in SCENE_TABLES}
@@ -319,12 +247,13 @@ def read_lander(path: str | Path, overrides: dict | None = None) -> Lander:
     title = head.string("title", name)
     rules = head.string("rules", DEFAULT_RULES, choices=tuple(RULES))
     extra = material_paths(head, "materials", path.parent)
-    if head.has("gravity"):
-        read_gravity(head, "gravity")             # checked here, so an error names [lander], not the scene
+    if head.has("gravity"):                       # checked here, so an error names [lander], not the scene
+        validate(SceneHead, {"gravity": head.raw("gravity")}, str(path), "lander")
     head.string("note", "")
     head.finish()
     req = _requirements(root.table("requirements"))  # before the scene, which takes its nominal speeds from it
-    scene = read_scene(path, scene_over)
+    document = lander_scene(path, root.data, req.envelope.nominal_velocity())
+    scene = read_scene(document)
     root.raw("synthesis", None)                   # alightsize.synthesis reads it
     for t in SCENE_TABLES:
         root.raw(t, None)
@@ -349,15 +278,16 @@ def read_lander(path: str | Path, overrides: dict | None = None) -> Lander:
     validate_references(root, loads)
     read_items(tuple(nodes), mats, req.required, root, rules)
     root.finish()
-    study = landing_cases(path, name, req, len(scene.scene.legs), scene_over)
+    study = landing_cases(document, name, req, len(scene.scene.legs), scene_over)
     member_loads = (partial(telescoping_dynamic_envelope, leg=loads.telescoping) if loads.telescoping
                     else partial(dynamic_envelope, truss=loads.cases[0].truss))
     landings = LandingSpec(study, envelopes, "criteria", member_loads)
     spec = DesignSpec(path, name, title, scene.scene.mass, len(scene.scene.legs), units, req.required, req.decimals,
                       mats, tuple(nodes), loads, landings, req.weight_goal, rules)
-    return Lander(spec, scene, req)
+    return Lander(spec, scene, req, document)
 
 
 def read_input(path: str | Path) -> DesignSpec:
     """A lander file or a design config, as read (`alightsize design` and `audit` take either)."""
-    return read_lander(path).spec if is_lander(path) else read_design(path)
+    root = load_toml(path)
+    return read_lander(path, root=root).spec if "lander" in root.data else read_design(path, root)

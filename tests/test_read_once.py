@@ -1,0 +1,54 @@
+"""A lander file is read once per command: the scene it implies is built from the parsed file, and the landing
+tasks get the parsed scene, not a path to read again (forked workers included: the spy logs to a file)."""
+
+import importlib
+import pkgutil
+import sys
+from pathlib import Path
+
+import pytest
+
+import alightsize
+import alightsize.common.config as config
+from alightsize.cli import main
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+@pytest.fixture
+def reads(tmp_path, monkeypatch):
+    """The paths load_toml reads from now on, wherever it was imported (a file, so forked workers count)."""
+    log = tmp_path / "reads.log"
+    original = config.load_toml
+    for info in pkgutil.walk_packages(alightsize.__path__, "alightsize."):     # every importer of load_toml
+        if info.name != "alightsize.__main__":
+            importlib.import_module(info.name)
+
+    def spy(path):
+        with open(log, "a", encoding="utf-8") as f:
+            f.write(f"{Path(path).resolve()}\n")
+        return original(path)
+    for module in list(sys.modules.values()):
+        if getattr(module, "load_toml", None) is original:
+            monkeypatch.setattr(module, "load_toml", spy)
+    return lambda p: log.read_text(encoding="utf-8").splitlines().count(str(p.resolve())) if log.exists() else 0
+
+
+@pytest.fixture
+def lander(tmp_path) -> Path:
+    """The lunar example with 4 Monte Carlo landings (16 envelope corners and 4 samples: 20 landing tasks)."""
+    text = (ROOT / "examples" / "lunar_lander.toml").read_text(encoding="utf-8")
+    assert "samples = 100" in text
+    p = tmp_path / "lander.toml"
+    p.write_text(text.replace("samples = 100", "samples = 4"), encoding="utf-8")
+    return p
+
+
+def test_design_reads_the_lander_file_once(lander, reads, tmp_path):
+    assert main(["design", str(lander), "--out", str(tmp_path / "out")]) in (0, 1)     # 1: a design that fails
+    assert reads(lander) == 1
+
+
+def test_simulate_reads_the_lander_file_once(lander, reads, tmp_path):
+    assert main(["simulate", str(lander), "--out", str(tmp_path / "out")]) == 0
+    assert reads(lander) == 1
