@@ -65,3 +65,12 @@ def test_a_misspelt_required_key_is_named_as_written_with_the_key_meant(tmp_path
     assert err.value.key.endswith(".unloading_rat")
     assert (err.value.expected, err.value.found) == ("the required key 'unloading_rate'",
                                                      "'unloading_rat' (did you mean 'unloading_rate'?)")
+
+
+def test_the_lander_reference_names_every_key_of_the_lander_tables():
+    from alightsize.model.envelope import Envelope
+    from alightsize.pipeline.lander import LanderFile, LanderHead, MonteCarlo, ReportTable, Requirements
+    text = (ROOT / "docs" / "reference" / "lander.md").read_text(encoding="utf-8")
+    written = set(re.findall(r"`\[?(\w+)", text))
+    for model in (LanderFile, LanderHead, Requirements, Envelope, MonteCarlo, ReportTable):
+        assert set(model.model_fields) - {"note"} <= written, model.__name__

@@ -19,12 +19,16 @@ from dataclasses import dataclass, replace
 from functools import partial
 from math import degrees
 from pathlib import Path
+from typing import Any, Literal
 
+from pydantic import model_validator
+
+from alightsize_sim.landing import G0
 from alightsize_sim.telescoping_leg import TelescopingLeg as SimTelescopingLeg
 
 from alightsize.common.config import SEED_MAX, Node, load_toml
-from alightsize.common.typed import validate
-from alightsize.landings.criteria import Criteria, read_criteria
+from alightsize.common.typed import Integer, Number, Table, refuse, validate
+from alightsize.landings.criteria import CriteriaTable
 from alightsize.landings.dispersions import Dispersion
 from alightsize.landings.study import Run, Study, _sampled
 from alightsize.loads.config import NAME, LoadsConfig, read_loads
@@ -34,11 +38,12 @@ from alightsize.loads.quasi_static import TELESCOPING, validate_references
 from alightsize.loads.telescoping import TelescopingLeg
 from alightsize.model.envelope import Envelope
 from alightsize.model.materials import library, material_paths
-from alightsize.model.scene_config import LANDER_ONLY, SceneConfig, SceneDocument, SceneHead, lander_scene, read_scene
+from alightsize.model.gravity import Gravity
+from alightsize.model.scene_config import SceneConfig, SceneDocument, SceneFile, build_scene, lander_scene
 from alightsize.pipeline.config import UNIT_SYSTEMS, DesignSpec, read_design, read_items
 from alightsize.pipeline.landings import LandingSpec
 from alightsize.checks.rules import DEFAULT_RULES, RULES
-from alightsize.pipeline.items import read_required
+from alightsize.pipeline.items import RequiredFactor
 from alightsize.pipeline.members import member_item
 
 SCENE_TABLES = ("capsule", "cells", "legs", "terrain", "initial", "controls", "output")
@@ -46,16 +51,72 @@ ALL_CONFIGURATIONS = "all"           # the combined envelope of App. III cell va
 DEFAULT_SAMPLES = 100                # Monte Carlo landings: about a minute on 2 cores (docs/notes)
 
 
-@dataclass(frozen=True)
-class Requirements:
-    required: float
-    decimals: int | None
-    weight_goal: float | None
-    criteria: Criteria
+class MonteCarlo(Table):
+    samples: Integer(0, 100_000) = DEFAULT_SAMPLES
+    seed: Integer(0, SEED_MAX) = 1
+    cell_scatter: Number("nonnegative") = 0.0
+    note: str = ""
+
+
+class Requirements(RequiredFactor):
+    """`[requirements]`: the design factor members must reach, the landing criteria and the impact envelope."""
+
+    decimals: Integer(0, 12) | None = None
+    weight_goal: Number() | None = None
+    criteria: CriteriaTable = CriteriaTable()
     envelope: Envelope
-    samples: int
-    seed: int
-    cell_scatter: float
+    monte_carlo: MonteCarlo = MonteCarlo()
+    note: str = ""
+
+    @model_validator(mode="after")
+    def _goal(self):
+        if self.weight_goal is not None and not 0 < self.weight_goal < 1:
+            raise refuse("the leg system's weight as a fraction of the capsule, in (0, 1)", repr(self.weight_goal),
+                         "weight_goal")
+        return self
+
+    @property
+    def required(self) -> float:
+        return 1.25 if self.required_design_factor is None else self.required_design_factor
+
+
+class LanderHead(Table):
+    name: str | None = None
+    title: str | None = None
+    gravity: Gravity = G0
+    rules: Literal[tuple(RULES)] = DEFAULT_RULES
+    materials: list[str] = []
+    note: str = ""
+
+    @model_validator(mode="after")
+    def _name(self):
+        if self.name is not None and not NAME.fullmatch(self.name):
+            raise refuse("1-31 letters, digits, '_', '.' or '-' (it names files and sheets)", repr(self.name), "name")
+        return self
+
+
+class ReportTable(Table):
+    units: Literal[UNIT_SYSTEMS] = "SI"
+
+
+class LanderFile(Table):
+    """A lander file's own tables, typed; the scene tables are the scene model's (SceneFile), [structure],
+    [members] and [[item]] are read with the design config's readers, [synthesis] by alightsize.synthesis."""
+
+    lander: LanderHead
+    requirements: Requirements
+    report: ReportTable = ReportTable()
+    structure: dict = {}
+    members: dict = {}
+    item: list = []
+    synthesis: dict = {}
+    capsule: Any = None
+    cells: Any = None
+    legs: Any = None
+    terrain: Any = None
+    initial: Any = None
+    controls: Any = None
+    output: Any = None
 
 
 @dataclass(frozen=True)
@@ -73,31 +134,6 @@ class Lander:
         return self.spec.landings.study
 
 
-def _requirements(node: Node) -> Requirements:
-    node.allow(("required_design_factor", "allow_below_one", "decimals", "weight_goal", "criteria", "envelope",
-                "monte_carlo", "note"))
-    required = read_required(node, 1.25)
-    decimals = node.integer("decimals", None, minimum=0, maximum=12)
-    goal = node.number("weight_goal", None)
-    if goal is not None and not 0 < goal < 1:
-        raise node.error("weight_goal", "the leg system's weight as a fraction of the capsule, in (0, 1)", repr(goal))
-    criteria = read_criteria(node.table("criteria", optional=True)) or Criteria(None, None)
-    env = node.table("envelope")
-    envelope = validate(Envelope, env.data, env.file, env.path)
-    mc = node.table("monte_carlo", optional=True)
-    samples, seed, scatter = DEFAULT_SAMPLES, 1, 0.0
-    if mc:
-        mc.allow(("samples", "seed", "cell_scatter", "note"))
-        samples = mc.integer("samples", DEFAULT_SAMPLES, minimum=0, maximum=100_000)
-        seed = mc.integer("seed", 1, minimum=0, maximum=SEED_MAX)
-        scatter = mc.number("cell_scatter", 0.0, positive=False)
-        mc.string("note", "")
-        mc.finish()
-    node.string("note", "")
-    node.finish()
-    return Requirements(required, decimals, goal, criteria, envelope, samples, seed, scatter)
-
-
 def _q(x: float, unit: str) -> str:
     return f"{x:.12g} {unit}"
 
@@ -108,7 +144,7 @@ def landing_cases(scene: SceneDocument, name: str, req: Requirements, legs: int,
     uniformly over the envelope (heading, roll and, with cell_scatter, every cell's crushing force as well); every
     run lands the lander file's scene with the overrides `base` (a design variant) under its own."""
     base = dict(base or {})
-    e = req.envelope
+    e, mc = req.envelope, req.monte_carlo
     axes: dict[str, list] = {"initial.velocity[2]": [_q(-v, "m/s") for v in sorted(set(e.vertical_speed))],
                              "initial.velocity[1]": [_q(h, "m/s") for h in sorted(set(e.horizontal_speed))],
                              "initial.roll": ["0.0 deg", _q(180.0 / legs, "deg")]}
@@ -135,18 +171,18 @@ def landing_cases(scene: SceneDocument, name: str, req: Requirements, legs: int,
     disp += [Dispersion(key, "uniform", (lo, hi), unit, False) for key, (lo, hi), unit in signed if lo != hi]
     if e.friction is not None and e.friction[0] < e.friction[1]:
         disp.append(Dispersion("terrain.mu_dynamic", "uniform", e.friction, "", False))
-    if req.cell_scatter > 0:
-        disp.append(Dispersion("legs.cell_factors", "normal", (1.0, req.cell_scatter), "", True))
+    if mc.cell_scatter > 0:
+        disp.append(Dispersion("legs.cell_factors", "normal", (1.0, mc.cell_scatter), "", True))
     runs = [Run(*p[:2], scene, *p[2:]) for p in points]
-    if req.samples:
+    if mc.samples:
         base = [("mc", "lander", dict(fixed), {}, None)]
         runs += [Run(rid, skey, scene, over, params, ref)
-                 for rid, skey, over, params, ref in _sampled(base, disp, req.samples, req.seed, {"lander": scene})]
+                 for rid, skey, over, params, ref in _sampled(base, disp, mc.samples, mc.seed, {"lander": scene})]
     plot = ("initial.velocity[1]", "initial.velocity[2]")
-    title = f"Landing cases of {name}: {len(combos)} envelope corners, {req.samples} Monte Carlo"
+    title = f"Landing cases of {name}: {len(combos)} envelope corners, {mc.samples} Monte Carlo"
     return Study(scene.path, name, title,
-                 tuple(runs), req.criteria, tuple(k for k in axes if k != "initial.velocity[2]"), "initial.velocity[2]",
-                 False, req.seed, plot)
+                 tuple(runs), req.criteria.criteria(), tuple(k for k in axes if k != "initial.velocity[2]"),
+                 "initial.velocity[2]", False, mc.seed, plot)
 
 
 def _crush(curve) -> float:
@@ -205,7 +241,7 @@ def crush_stroke(deflection, force) -> tuple[float, float]:
     return max(force[:-1]), deflection[-2]
 
 
-def _crushable(node: Node, root: Node, mats: dict) -> Node:
+def _crushable(node: Node, root: Node, scene: SceneFile, mats: dict) -> Node:
     """An item weighed as a cell's crushable core, `weight = {method = "crushable", cell = NAME}`, as the prism
     it is: area = crushing force / crush strength, length = stroke / usable stroke fraction (App. V)."""
     w = node.data.get("weight")
@@ -214,13 +250,13 @@ def _crushable(node: Node, root: Node, mats: dict) -> Node:
     wn = Node(node.file, f"{node.path}.weight", dict(w), root.context)
     wn.allow(("method", "cell", "allowance", "extra", "label", "note"))
     cell = wn.string("cell")
-    if cell not in (root.data.get("cells") or {}):
+    if cell not in scene.cells:
         raise wn.error("cell", "the name of a [cells.NAME] table", repr(cell))
     mat = mats.get(str(node.data.get("material")))
     if mat is None or mat.crush_strength is None or mat.stroke_fraction is None:
         raise node.error("material", "a crushable material (with crush_strength and stroke_fraction)",
                          repr(node.data.get("material")))
-    force, stroke = crush_stroke(*cell_curve(root, cell))
+    force, stroke = crush_stroke(scene.cells[cell].deflection, scene.cells[cell].force)
     prism = {k: v for k, v in w.items() if k not in ("method", "cell")}
     prism.update(method="prism", area=f"{force / mat.crush_strength!r} m^2",
                  length=f"{stroke / mat.stroke_fraction!r} m")
@@ -238,29 +274,17 @@ def read_lander(path: str | Path, overrides: dict | None = None, root: Node | No
     for key, value in (overrides or {}).items():
         root.set_path(key, value)
     scene_over = {k: v for k, v in (overrides or {}).items() if k.split(".")[0] in SCENE_TABLES}
-    root.allow((*SCENE_TABLES, *LANDER_ONLY))
-    head = root.table("lander")
-    head.allow(("name", "title", "gravity", "rules", "materials", "note"))
-    name = head.string("name", path.stem)
-    if not NAME.fullmatch(name):
-        raise head.error("name", "1-31 letters, digits, '_', '.' or '-' (it names files and sheets)", repr(name))
-    title = head.string("title", name)
-    rules = head.string("rules", DEFAULT_RULES, choices=tuple(RULES))
-    extra = material_paths(head, "materials", path.parent)
-    if head.has("gravity"):                       # checked here, so an error names [lander], not the scene
-        validate(SceneHead, {"gravity": head.raw("gravity")}, str(path), "lander")
-    head.string("note", "")
-    head.finish()
-    req = _requirements(root.table("requirements"))  # before the scene, which takes its nominal speeds from it
+    lander = validate(LanderFile, root.data, str(path))
+    head, req, units = lander.lander, lander.requirements, lander.report.units
+    name = head.name if head.name is not None else path.stem
+    title = head.title if head.title is not None else name
+    rules = head.rules
+    extra = material_paths(root.table("lander"), "materials", path.parent)
     document = lander_scene(path, root.data, req.envelope.nominal_velocity())
-    scene = read_scene(document)
-    root.raw("synthesis", None)                   # alightsize.synthesis reads it
-    for t in SCENE_TABLES:
-        root.raw(t, None)
-    rep = root.table("report", optional=True)
-    units = rep.string("units", "SI", choices=UNIT_SYSTEMS) if rep else "SI"
-    if rep:
-        rep.finish()
+    scene_file = validate(SceneFile, document.data, str(path))
+    scene = build_scene(path, scene_file)
+    for t in ("lander", "requirements", "report", "synthesis", *SCENE_TABLES):
+        root.raw(t, None)                         # read above (alightsize.synthesis reads [synthesis])
     loads, envelopes = _loads_config(root, path, name, scene, units)
     mats = library(extra)
     members = root.table("members", optional=True)
@@ -272,7 +296,7 @@ def read_lander(path: str | Path, overrides: dict | None = None, root: Node | No
         nodes.append(Node(root.file, m.path, data, root.context))
     if members:
         members.finish()
-    nodes += [_crushable(n, root, mats) for n in root.tables("item", optional=True, label="name")]
+    nodes += [_crushable(n, root, scene_file, mats) for n in root.tables("item", optional=True, label="name")]
     if not nodes:
         raise root.error("members", "at least one [members.NAME] table or [[item]]", "neither")
     validate_references(root, loads)

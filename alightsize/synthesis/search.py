@@ -190,4 +190,4 @@ def _trade_context(ev: Evaluator, axis: str, value: float) -> dict:
         m = max(abs(lo), abs(hi))
         rng = (lo * value / m, hi * value / m) if m > 0 else (-value, value)
         return {TRADE_KEYS[axis]: [f"{rng[0]!r} rad", f"{rng[1]!r} rad"]}
-    return {TRADE_KEYS[axis]: [f"{min(env.horizontal[0], value)!r} m/s", f"{value!r} m/s"]}
+    return {TRADE_KEYS[axis]: [f"{min(env.horizontal_speed[0], value)!r} m/s", f"{value!r} m/s"]}
