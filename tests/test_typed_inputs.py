@@ -23,20 +23,30 @@ SECTIONS = {"`[scene]`": set(sc.SceneHead.model_fields), "`[capsule]`": set(sc.C
             "`[output]`": set(sc.OutputTable.model_fields)}
 
 
-def documented(path: Path) -> dict[str, set[str]]:
-    """The keys each section of a reference page lists in the first column of its tables."""
+def documented(path: Path, sections) -> dict[str, set[str]]:
+    """The keys each of `sections` of a reference page lists in the first column of its tables."""
     out: dict[str, set[str]] = {}
     section = None
     for line in path.read_text(encoding="utf-8").splitlines():
         if line.startswith("#"):
-            section = next((s for s in SECTIONS if s in line), None)
+            section = next((s for s in sections if s in line), None)
         elif section and line.startswith("| `"):
-            out.setdefault(section, set()).update(re.findall(r"`(\w+)`", line.split("|")[1]))
+            out.setdefault(section, set()).update(re.findall(r"`\[*(\w+)\]*`", line.split("|")[1]))
     return out
 
 
 def test_the_scene_reference_lists_every_key_the_models_take_and_no_other():
-    assert documented(ROOT / "docs" / "reference" / "scene.md") == SECTIONS
+    assert documented(ROOT / "docs" / "reference" / "scene.md", SECTIONS) == SECTIONS
+
+
+def test_the_loads_reference_lists_every_key_the_models_take_and_no_other():
+    from alightsize.loads import config as lc
+    sections = {"`[loads]`": set(lc.LoadsHead.model_fields), "`[report]`": set(lc.LoadsReport.model_fields),
+                "`[truss]`": set(lc.TrussTable.model_fields), "`[grid]`": set(lc.GridTable.model_fields),
+                "`[[configuration]]`": set(lc.Configuration.model_fields),
+                "`[[combined]]`": set(lc.Combined.model_fields),
+                "`[telescoping]`": set(lc.TelescopingTable.model_fields)}
+    assert documented(ROOT / "docs" / "reference" / "loads.md", sections) == sections
 
 
 @pytest.mark.parametrize("override, key, expected, found", [
@@ -67,10 +77,18 @@ def test_a_misspelt_required_key_is_named_as_written_with_the_key_meant(tmp_path
                                                      "'unloading_rat' (did you mean 'unloading_rate'?)")
 
 
+def test_the_materials_reference_lists_every_key_of_a_material_file():
+    from alightsize.model.materials import MaterialFile
+    sections = {"Material file": set(MaterialFile.model_fields)}
+    assert documented(ROOT / "docs" / "reference" / "materials.md", sections) == sections
+
+
 def test_the_lander_reference_names_every_key_of_the_lander_tables():
     from alightsize.model.envelope import Envelope
-    from alightsize.pipeline.lander import LanderFile, LanderHead, MonteCarlo, ReportTable, Requirements
+    from alightsize.pipeline.lander import (ArticulatedStructure, LanderFile, LanderHead, MonteCarlo, ReportTable,
+                                            Requirements, TelescopingStructure)
     text = (ROOT / "docs" / "reference" / "lander.md").read_text(encoding="utf-8")
     written = {part for key in re.findall(r"`\[*([\w.]+)", text) for part in key.split(".")}
-    for model in (LanderFile, LanderHead, Requirements, Envelope, MonteCarlo, ReportTable):
+    for model in (LanderFile, LanderHead, Requirements, Envelope, MonteCarlo, ReportTable, TelescopingStructure,
+                  ArticulatedStructure):
         assert set(model.model_fields) - {"note"} <= written, model.__name__

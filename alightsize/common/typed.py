@@ -18,7 +18,7 @@ _ERROR = "alightsize"          # the type of the errors raised here (their conte
 Sign = Literal["positive", "any", "nonnegative"]
 
 
-def refuse(expected: str, found: str | None = None, key: str = "") -> PydanticCustomError:
+def refuse(expected: str, found: str | None = None, key: str | None = None) -> PydanticCustomError:
     """A validation error at the value being validated (or at `key` below it: "name", "[2]", "legs.axial")."""
     return PydanticCustomError(_ERROR, "{expected}", {"expected": expected, "found": found, "key": key})
 
@@ -33,7 +33,7 @@ class Table(BaseModel):
     def _known_keys(cls, data: Any) -> Any:
         if not isinstance(data, dict):
             return data
-        known = cls.model_fields
+        known = {f.alias or k: f for k, f in cls.model_fields.items()}      # keys as written ("from": alias)
         unknown = sorted(set(data) - set(known))
         if unknown:
             key = unknown[0]
@@ -154,11 +154,12 @@ def input_error(exc: ValidationError, data: Any, file: str, path: str = "") -> I
     found = _describe(err["input"])
     if kind == _ERROR:
         expected, found = ctx["expected"], ctx["found"] or found
-        if ctx["key"]:
-            if ctx["key"].startswith("[") and parts:
-                parts[-1] += ctx["key"]
+        sub = ctx["key"]
+        if sub is not None:
+            if sub.startswith("[") and parts:
+                parts[-1] += sub
             else:
-                parts.append(ctx["key"])
+                parts.append(sub if sub.strip() else json.dumps(sub))     # an empty key as TOML writes it, ""
     elif kind == "missing":
         expected, found = "this key to be present", "nothing"
     elif kind == "literal_error":
@@ -175,9 +176,10 @@ def input_error(exc: ValidationError, data: Any, file: str, path: str = "") -> I
     return InputError(file, key, expected, found)
 
 
-def validate(model: type[BaseModel], data: Any, file: str, path: str = ""):
-    """`data` (a TOML table at key path `path`) as `model`; any problem is an InputError naming the key."""
+def validate(model: type[BaseModel], data: Any, file: str, path: str = "", **context):
+    """`data` (a TOML table at key path `path`) as `model`, its validators given `context` (and the file); any
+    problem is an InputError naming the key."""
     try:
-        return model.model_validate(data, context={"file": str(file)})
+        return model.model_validate(data, context={"file": str(file), **context})
     except ValidationError as exc:
         raise input_error(exc, data, str(file), path) from None

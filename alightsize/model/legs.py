@@ -1,4 +1,4 @@
-"""Readers of a leg's model: crush-cell curves, the articulated leg's geometry (App. III lengths) and its
+"""Models of a leg's input tables: crush-cell curves, the articulated leg's geometry (App. III lengths) and its
 truss angles. Read and validated at the boundary; SI inside."""
 
 from __future__ import annotations
@@ -13,8 +13,7 @@ from alightsize_sim.crush_curve import CrushCurve
 
 from pydantic import model_validator
 
-from alightsize.common.config import Node
-from alightsize.common.typed import Number, Quantities, Quantity, Table, refuse, validate
+from alightsize.common.typed import Number, Quantities, Quantity, Table, refuse
 
 LENGTHS = ("AU", "AD", "AS", "AL", "AO", "AE", "AA", "AB", "AG", "AH", "AP", "AQ")
 
@@ -78,21 +77,20 @@ class GeometryTable(Table):
                                    **{k: scale * getattr(self, k) for k in LENGTHS})
 
 
-def read_curve(node: Node) -> CrushCurve:
-    """A crush curve table of a Node-read file (deflection, force, factor, note)."""
-    return validate(CurveTable, node.data, node.file, node.path).curve()
+class TrussTable(Table):
+    """The parallelogram truss's member angles (Fig. 104-105)."""
 
+    theta: Quantity("angle")
+    gamma: Quantity("angle")
+    rho: Quantity("angle")
+    note: str = ""
 
-def read_geometry(node: Node) -> ArticulatedGeometry:
-    return validate(GeometryTable, node.data, node.file, node.path).geometry()
+    @model_validator(mode="after")
+    def _angles(self):
+        a = (self.theta, self.gamma, self.rho)
+        if not all(0 < v < radians(90) for v in a) or self.gamma + self.rho >= radians(180):
+            raise refuse("truss angles between 0 and 90 deg", ", ".join(f"{np.degrees(v):.4g} deg" for v in a), "theta")
+        return self
 
-
-def read_truss(node: Node) -> TrussAngles:
-    node.allow(("theta", "gamma", "rho", "note"))
-    a = {k: node.quantity(k, "angle") for k in ("theta", "gamma", "rho")}
-    node.string("note", "")
-    node.finish()
-    if not all(0 < v < radians(90) for v in a.values()) or a["gamma"] + a["rho"] >= radians(180):
-        raise node.error("theta", "truss angles between 0 and 90 deg",
-                         ", ".join(f"{np.degrees(v):.4g} deg" for v in a.values()))
-    return TrussAngles(**a)
+    def truss(self) -> TrussAngles:
+        return TrussAngles(self.theta, self.gamma, self.rho)

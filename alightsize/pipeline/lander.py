@@ -15,31 +15,34 @@ members' checks, the landing cases of the requirements). Reading it only reads a
 from __future__ import annotations
 
 import itertools
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from functools import partial
-from math import degrees
+from math import degrees, radians
 from pathlib import Path
 from typing import Any, Literal
 
-from pydantic import model_validator
+from pydantic import ValidationInfo, model_validator
 
 from alightsize_sim.landing import G0
-from alightsize_sim.telescoping_leg import TelescopingLeg as SimTelescopingLeg
+from alightsize_sim.crush_curve import CrushCurve
 
 from alightsize.common.config import SEED_MAX, Node, load_toml
-from alightsize.common.typed import Integer, Number, Table, refuse, validate
+from alightsize.common.errors import InputError
+from alightsize.common.typed import Integer, Number, Quantity, Table, refuse, validate
 from alightsize.landings.criteria import CriteriaTable
 from alightsize.landings.dispersions import Dispersion
 from alightsize.landings.study import Run, Study, _sampled
-from alightsize.loads.config import NAME, LoadsConfig, read_loads
-from alightsize.loads.envelopes import default_grid
+from alightsize.loads.config import Combined, Configuration, GridTable, LoadsConfig, Name, check_combined
+from alightsize.loads.envelopes import LegCase, default_grid
 from alightsize.loads.histories import dynamic_envelope, telescoping_dynamic_envelope
 from alightsize.loads.quasi_static import TELESCOPING, validate_references
 from alightsize.loads.telescoping import TelescopingLeg
 from alightsize.model.envelope import Envelope
 from alightsize.model.materials import library, material_paths
 from alightsize.model.gravity import Gravity
-from alightsize.model.scene_config import SceneConfig, SceneDocument, SceneFile, build_scene, lander_scene
+from alightsize.model.legs import TrussTable
+from alightsize.model.scene_config import (SceneConfig, SceneDocument, SceneFile, TelescopingLegs, build_scene,
+                                           lander_scene)
 from alightsize.pipeline.config import UNIT_SYSTEMS, DesignSpec, read_design, read_items
 from alightsize.pipeline.landings import LandingSpec
 from alightsize.checks.rules import DEFAULT_RULES, RULES
@@ -81,18 +84,12 @@ class Requirements(RequiredFactor):
 
 
 class LanderHead(Table):
-    name: str | None = None
+    name: Name | None = None
     title: str | None = None
     gravity: Gravity = G0
     rules: Literal[tuple(RULES)] = DEFAULT_RULES
     materials: list[str] = []
     note: str = ""
-
-    @model_validator(mode="after")
-    def _name(self):
-        if self.name is not None and not NAME.fullmatch(self.name):
-            raise refuse("1-31 letters, digits, '_', '.' or '-' (it names files and sheets)", repr(self.name), "name")
-        return self
 
 
 class ReportTable(Table):
@@ -189,42 +186,74 @@ def _crush(curve) -> float:
     return crush_stroke(curve.deflection, curve.force)[0]
 
 
-def _loads_config(root: Node, path: Path, name: str, scene: SceneConfig,
+class TelescopingStructure(Table):
+    """[structure] of telescoping legs: what the App. III free body needs beyond the legs and cells."""
+
+    bearing_length: Quantity("length")
+    friction: Number("any") = 0.05
+    note: str = ""
+
+    @model_validator(mode="after")
+    def _friction(self):
+        if not 0 <= self.friction < 1:
+            raise refuse("a friction coefficient in [0, 1)", f"{self.friction}", "friction")
+        return self
+
+
+class ArticulatedStructure(Table):
+    """[structure] of articulated legs: the truss and the psi swept for the App. III envelopes of the lander's
+    own cells (configuration `name`), other cell variants and their combinations."""
+
+    truss: TrussTable
+    psi_final: Quantity("angle", "any")
+    grid: GridTable = GridTable()
+    configuration: list[Configuration] = []
+    combined: list[Combined] = []
+    name: Name | None = None
+    note: str = ""
+
+    @model_validator(mode="after")
+    def _cases(self, info: ValidationInfo):
+        p0, p1 = info.context["psi_initial"], self.psi_final
+        if not (radians(-90) < p0 < p1 < radians(90)):
+            raise refuse("-90 deg < [legs] psi_initial < psi_final < 90 deg",
+                          f"{degrees(p0):g} and {degrees(p1):g} deg", "psi_final")
+        names = [c.name for c in self.configuration] + [self.name or info.context["name"]]
+        dup = next((n for n in names if names.count(n) > 1), None)
+        if dup:
+            raise refuse("configuration names unique (with the lander's own, `name`)", f"{dup!r} twice",
+                         "configuration")
+        check_combined(names, self.combined)
+        return self
+
+
+def _loads_config(path: Path, name: str, structure: dict, scene: SceneFile, legs: tuple,
                   units: str) -> tuple[LoadsConfig, tuple[str, ...]]:
     """The App. III loads config of the lander's own legs and cells (and the envelopes its members use)."""
-    node = root.table("structure", optional=True) or Node(root.file, "structure", {}, root.context)
-    leg = scene.scene.legs[0]
-    if isinstance(leg, SimTelescopingLeg):
-        node.allow(("bearing_length", "friction", "note"))
+    file = str(path)
+    if isinstance(scene.legs, TelescopingLegs):
+        s = validate(TelescopingStructure, structure, file, "structure")
+        leg = legs[0]
         if not leg.pads:
-            raise root.error("legs.pad_angles", "rotational pads on the telescoping leg (App. III free body)", "none")
+            raise InputError(file, "legs.pad_angles", "rotational pads on the telescoping leg (App. III free body)",
+                             "none")
         tele = TelescopingLeg(_crush(leg.axial.curve), _crush(leg.pads[0].curve), leg.pad_lever, leg.rho,
-                              node.quantity("bearing_length", "length"), node.number("friction", 0.05, positive=False))
-        node.string("note", "")
-        node.finish()
-        if not 0 <= tele.friction < 1:
-            raise node.error("friction", "a friction coefficient in [0, 1)", f"{tele.friction}")
+                              s.bearing_length, s.friction)
         return LoadsConfig(path, f"{name} telescoping leg (App. III free body)", units, default_grid(), (), (), tele), \
             (TELESCOPING,)
-    node.allow(("truss", "psi_final", "grid", "configuration", "combined", "name", "note"))
-    legs, cells = root.data["legs"], root.data["cells"]
-    own_name = node.string("name", name)
-    own = {"name": own_name, "psi_initial": legs["psi_initial"], "psi_final": node.raw("psi_final"),
-           "upper": {k: cells[legs["upper"]][k] for k in ("deflection", "force")},
-           "lower": {k: cells[legs["lower"]][k] for k in ("deflection", "force")}}
-    if "length_scale" in legs:
-        own["length_scale"] = legs["length_scale"]
-    extra = [n.data for n in node.tables("configuration", optional=True)]     # read in full by read_loads below
-    combined = [n.data for n in node.tables("combined", optional=True)]
-    if extra and not combined:
-        combined.append({"name": ALL_CONFIGURATIONS, "configurations": [c.get("name") for c in extra] + [own_name]})
-    data = {"geometry": legs["geometry"], "truss": node.raw("truss"), "configuration": [*extra, own],
-            "combined": combined, **({"grid": node.raw("grid")} if node.has("grid") else {})}
-    node.string("note", "")
-    node.finish()
-    cfg = read_loads(path, Node(root.file, "structure", data, root.context))
-    cfg = replace(cfg, title=f"{name} articulated leg (App. III envelopes)", units=units)
-    return cfg, (own_name, *(c[0] for c in cfg.combined))
+    own = scene.legs
+    s = validate(ArticulatedStructure, structure, file, "structure", psi_initial=own.psi_initial, name=name)
+    upper, lower = scene.cells[own.upper], scene.cells[own.lower]
+    cases = [c.case(own.geometry, s.truss) for c in s.configuration]
+    cases.append(LegCase(s.name or name, own.geometry.geometry(own.length_scale), s.truss.truss(),
+                         CrushCurve(upper.deflection, upper.force), CrushCurve(lower.deflection, lower.force),
+                         own.psi_initial, s.psi_final))
+    combined = [(c.name, tuple(c.configurations)) for c in s.combined]
+    if len(cases) > 1 and not combined:
+        combined.append((ALL_CONFIGURATIONS, tuple(c.name for c in cases)))
+    cfg = LoadsConfig(path, f"{name} articulated leg (App. III envelopes)", units, s.grid.grid(), tuple(cases),
+                      tuple(combined), None)
+    return cfg, (cases[-1].name, *(c[0] for c in combined))
 
 
 def cell_curve(root: Node, cell: str) -> tuple[list[float], list[float]]:
@@ -283,9 +312,9 @@ def read_lander(path: str | Path, overrides: dict | None = None, root: Node | No
     document = lander_scene(path, root.data, req.envelope.nominal_velocity())
     scene_file = validate(SceneFile, document.data, str(path))
     scene = build_scene(path, scene_file)
-    for t in ("lander", "requirements", "report", "synthesis", *SCENE_TABLES):
+    for t in ("lander", "requirements", "report", "structure", "synthesis", *SCENE_TABLES):
         root.raw(t, None)                         # read above (alightsize.synthesis reads [synthesis])
-    loads, envelopes = _loads_config(root, path, name, scene, units)
+    loads, envelopes = _loads_config(path, name, lander.structure, scene_file, scene.scene.legs, units)
     mats = library(extra)
     members = root.table("members", optional=True)
     nodes = []
