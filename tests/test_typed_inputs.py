@@ -83,6 +83,15 @@ def test_the_materials_reference_lists_every_key_of_a_material_file():
     assert documented(ROOT / "docs" / "reference" / "materials.md", sections) == sections
 
 
+def test_the_design_reference_lists_every_key_of_the_design_tables():
+    from alightsize.pipeline import config as dc
+    from alightsize.pipeline.landings import LandingsTable
+    sections = {"`[design]`": set(dc.DesignHead.model_fields), "`[report]`": set(dc.DesignReport.model_fields),
+                "`[audit]`": set(dc.Audit.model_fields), "`[loads]`": set(dc.LoadsFileRef.model_fields),
+                "`[landings]`": set(LandingsTable.model_fields)}
+    assert documented(ROOT / "docs" / "reference" / "design.md", sections) == sections
+
+
 def test_the_lander_reference_names_every_key_of_the_lander_tables():
     from alightsize.model.envelope import Envelope
     from alightsize.pipeline.lander import (ArticulatedStructure, LanderFile, LanderHead, MonteCarlo, ReportTable,

@@ -62,13 +62,13 @@ def read_material(path: str | Path) -> Material:
     return Material(Path(path).stem, **f.model_dump())
 
 
-def material_paths(node: Node, key: str, base: Path) -> list[Path]:
+def material_paths(texts: list[str], base: Path, file: str, key: str) -> list[Path]:
     """The extra material files or folders a config lists at `key`, relative to `base` (its folder)."""
     out = []
-    for text in node.strings(key, []):
+    for text in texts:
         path = base / text
         if not text.strip() or not (path.suffix == ".toml" and is_file(path) or is_dir(path)):
-            raise node.error(key, "paths of material files (.toml) or folders of them, relative to this file",
+            raise InputError(file, key, "paths of material files (.toml) or folders of them, relative to this file",
                              repr(text))
         out.append(path)
     return out
