@@ -41,8 +41,8 @@ from alightsize.model.envelope import Envelope
 from alightsize.model.materials import library, material_paths
 from alightsize.model.gravity import Gravity
 from alightsize.model.legs import TrussTable
-from alightsize.model.scene_config import (SceneConfig, SceneDocument, SceneFile, TelescopingLegs, build_scene,
-                                           lander_scene)
+from alightsize.model.scene_config import (Cell, SceneConfig, SceneDocument, SceneFile, TelescopingLegs,
+                                           build_scene, lander_scene)
 from alightsize.pipeline.config import UNIT_SYSTEMS, DesignSpec, read_design, read_items
 from alightsize.pipeline.landings import LandingSpec
 from alightsize.checks.rules import DEFAULT_RULES, RULES
@@ -256,12 +256,10 @@ def _loads_config(path: Path, name: str, structure: dict, scene: SceneFile, legs
     return cfg, (cases[-1].name, *(c[0] for c in combined))
 
 
-def cell_curve(root: Node, cell: str) -> tuple[list[float], list[float]]:
-    """(deflections m, forces N) of the `[cells.NAME]` table of a lander file as written."""
-    node = root.table("cells").table(cell)
-    return ([node.parse_quantity(f"deflection[{i}]", v, "length", positive=False)
-             for i, v in enumerate(node.raw("deflection"))],
-            [node.parse_quantity(f"force[{i}]", v, "force", positive=False) for i, v in enumerate(node.raw("force"))])
+def cell_curve(root: Node, cell: str) -> tuple[tuple[float, ...], tuple[float, ...]]:
+    """(deflections m, forces N) of the `[cells.NAME]` table of a lander file as written (no `factor`)."""
+    c = validate(Cell, root.table("cells").table(cell).data, root.file, f"cells.{cell}")
+    return c.deflection, c.force
 
 
 def crush_stroke(deflection, force) -> tuple[float, float]:
