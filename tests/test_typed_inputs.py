@@ -57,6 +57,8 @@ def test_the_loads_reference_lists_every_key_the_models_take_and_no_other():
     ({"legs.lenght": "1 m"}, "legs.lenght", "one of the known keys", "did you mean 'length'?"),
     ({"terrain.rocks": [{"x": "0 m", "y": "0 m", "radius": "1 m"}]}, "terrain.rocks[0].shape",
      "this key to be present", "nothing"),
+    ({"terrain.rocks": [{"hsape": "box", "x": "0 m", "y": "0 m", "radius": "1 m"}]}, "terrain.rocks[0].hsape",
+     "the required key 'shape'", "did you mean 'shape'?"),
 ])
 def test_an_error_names_the_key_as_written(override, key, expected, found):
     with pytest.raises(InputError) as err:

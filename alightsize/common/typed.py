@@ -168,8 +168,11 @@ def input_error(exc: ValidationError, data: Any, file: str, path: str = "") -> I
         parts.append(ctx["discriminator"].strip("'").removesuffix("()"))
         expected, found = "one of " + ctx["expected_tags"], repr(ctx["tag"])
     elif kind == "union_tag_not_found":
-        parts.append(ctx["discriminator"].strip("'").removesuffix("()"))
-        expected, found = "this key to be present", "nothing"
+        tag = ctx["discriminator"].strip("'").removesuffix("()")
+        written = _close(tag, err["input"]) if isinstance(err["input"], dict) else None
+        parts.append(written or tag)          # a misspelt tag named as written
+        expected, found = (f"the required key {tag!r}", f"{written!r} (did you mean {tag!r}?)") if written else \
+            ("this key to be present", "nothing")
     else:
         expected = _EXPECTED.get(kind, err["msg"])
     key = ".".join(([path] if path else []) + parts)
