@@ -52,3 +52,10 @@ def test_design_reads_the_lander_file_once(lander, reads, tmp_path):
 def test_simulate_reads_the_lander_file_once(lander, reads, tmp_path):
     assert main(["simulate", str(lander), "--out", str(tmp_path / "out")]) == 0
     assert reads(lander) == 1
+
+
+def test_synthesize_reads_the_lander_file_once(reads, tmp_path):
+    from test_synthesis import _small       # the lunar example cut to a search of seconds
+    lander = _small(tmp_path)
+    assert main(["synthesize", str(lander), "--out", str(tmp_path / "out"), "--serial", "--no-trade"]) == 0
+    assert reads(lander) == 1

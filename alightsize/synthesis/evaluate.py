@@ -87,12 +87,12 @@ class Evaluator:
 
     def __init__(self, path: Path, free: tuple[FreeParameter, ...], out: Path, context: dict | None = None,
                  backend: str = "pool", workers: int | None = None, scheduler: str | None = None,
-                 stroke_margin: float = 0.0, quiet: bool = True):
+                 stroke_margin: float = 0.0, quiet: bool = True, data: dict | None = None):
         self.path, self.free, self.out = Path(path), free, Path(out)
         self.context = dict(context or {})
         self.backend, self.workers, self.scheduler, self.quiet = backend, workers, scheduler, quiet
         self.stroke_margin = stroke_margin
-        self.root = load_toml(self.path)
+        self.root = load_toml(self.path) if data is None else Node(self.path, "", data)    # `data`: as read
         self.file_hash = hashlib.sha256(self.path.read_bytes()).hexdigest()
         self.out.mkdir(parents=True, exist_ok=True)
         RunStore(self.out / "runs.sqlite").close()                 # creates it in WAL mode
