@@ -12,7 +12,26 @@ import alightsize
 import alightsize.common.config as config
 from alightsize.cli import main
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = next(p for p in Path(__file__).resolve().parents if (p / "pyproject.toml").is_file())
+# A level lunar drop at 3 m/s, its 2 corners and 2 Monte Carlo landings per candidate, one generation of 3: a
+# search of seconds (as tests/test_synthesis.py cuts the example)
+SMALL_SEARCH = """
+[requirements.envelope]
+vertical_speed = "3 m/s"
+
+[requirements.monte_carlo]
+samples = 2
+seed = 5
+
+[synthesis]
+seed = 11
+generations = 1
+population = 3
+check_samples = 2
+
+[synthesis.free]
+"cells.axial.crush_force" = ["4 kN", "16 kN"]
+"""
 
 
 @pytest.fixture
@@ -55,7 +74,10 @@ def test_simulate_reads_the_lander_file_once(lander, reads, tmp_path):
 
 
 def test_synthesize_reads_the_lander_file_once(reads, tmp_path):
-    from test_synthesis import _small       # the lunar example cut to a search of seconds
-    lander = _small(tmp_path)
+    text = (ROOT / "examples" / "lunar_lander.toml").read_text(encoding="utf-8")
+    assert "[requirements.envelope]" in text and 't_final = "20 s"' in text
+    lander = tmp_path / "small.toml"
+    lander.write_text(text[:text.index("[requirements.envelope]")].replace('t_final = "20 s"', 't_final = "3 s"')
+                      + SMALL_SEARCH, encoding="utf-8")
     assert main(["synthesize", str(lander), "--out", str(tmp_path / "out"), "--serial", "--no-trade"]) == 0
     assert reads(lander) == 1

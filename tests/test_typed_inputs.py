@@ -11,7 +11,7 @@ from alightsize.model import scene_config as sc
 from alightsize.model.legs import GeometryTable
 from alightsize.model.scene_config import read_scene
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = next(p for p in Path(__file__).resolve().parents if (p / "pyproject.toml").is_file())
 SCENES = ROOT / "examples" / "affdl-tr-66-33" / "scenes"
 LEG_KEYS = set(sc.Legs.model_fields) | {"kind"}
 SECTIONS = {"`[scene]`": set(sc.SceneHead.model_fields), "`[capsule]`": set(sc.Capsule.model_fields),

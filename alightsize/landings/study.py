@@ -149,7 +149,7 @@ def _grid_points(grid: Node, scenes: dict) -> list[tuple]:
              None) for n, c in enumerate(combos)]
 
 
-def _cell_shape(scene: SceneDocument) -> tuple[int, int]:
+def _cell_shape(scene: SceneDocument | Path) -> tuple[int, int]:
     cfg = read_scene(scene)
     return len(cfg.cell_names), len(cfg.cell_names[0])
 
