@@ -501,7 +501,8 @@ def build_scene(path: Path, f: SceneFile) -> SceneConfig:
     q0 = matrix_quat(lepk @ lkx @ to_geo)
 
     c = f.controls
-    period = float(np.pi * np.sqrt(mass / legs[0].cells[0].k))    # TAU = pi sqrt(M / SLOPE(1)) (FUNEV, line 6692)
+    period = float(np.pi * np.sqrt(mass / legs[0].cells[0].k))    # TAU = pi sqrt(M / SLOPE(1)) (App. VII,
+                                                                  # telescoping subroutine FORCE)
     controls = Controls(t_final=c.t_final, rtol=c.rtol, atol=c.atol, fixed_step=c.fixed_step, max_step=c.max_step,
                         event_tol=c.event_tol, tip_angle=c.tip_angle, taus=c.taus, period=period,
                         stop_on_bottoming=c.stop_on_bottoming, energy_check_from=c.energy_criterion_from,
