@@ -130,9 +130,10 @@ def _synthesize(args, stage: Stage) -> int:
     from alightsize.synthesis.spec import parse_start, read_synthesis
     backend, workers = _backend(args)
     out = Path(args.out)
-    start = parse_start(read_synthesis(args.lander), args.start)
+    spec = read_synthesis(args.lander)
+    start = parse_start(spec, args.start)
     try:
-        res = synthesize(args.lander, out, start, not args.no_trade, backend, workers,
+        res = synthesize(spec, out, start, not args.no_trade, backend, workers,
                          args.scheduler, log=lambda msg: print(msg, flush=True))
     except KeyboardInterrupt:
         print(f"alightsize: interrupted; every landing and candidate is stored in {out / 'runs.sqlite'}: "

@@ -270,13 +270,15 @@ RAW = {"overrides", "params"}
 
 
 def nonfinite(obj: Any, where: str = "", seen: set | None = None, depth: int = 0) -> list[str]:
-    """Attribute paths of the NaN or infinite numbers in a reader's result (raw TOML kept in Nodes skipped)."""
+    """Attribute paths of the NaN or infinite numbers in a reader's result (raw TOML kept in Nodes and scene
+    documents skipped)."""
     import numpy as np
 
     from alightsize.common.config import Node
+    from alightsize.model.scene_config import SceneDocument
     seen = set() if seen is None else seen
-    if depth > 14 or id(obj) in seen or isinstance(obj, (str, bytes, Path, Node, type)) or callable(obj) and not \
-            dataclasses.is_dataclass(obj):
+    if depth > 14 or id(obj) in seen or isinstance(obj, (str, bytes, Path, Node, SceneDocument, type)) or \
+            callable(obj) and not dataclasses.is_dataclass(obj):
         return []
     if isinstance(obj, (float, np.floating)):
         ok = math.isfinite(obj) or obj == math.inf and where.rpartition(".")[2] in INFINITE_OK

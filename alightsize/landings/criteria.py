@@ -8,8 +8,12 @@ from __future__ import annotations
 import json
 from dataclasses import dataclass
 from math import inf
+from typing import Annotated, Any, Literal
+
+from pydantic import PlainValidator
 
 from alightsize.common.config import Node
+from alightsize.common.typed import Table, refuse, validate
 
 # Sec. II.A.1 (human, couch facing up): 20 g at <= 10,000 g/s vertically (body axis 3), 10 g at <= 1000 g/s
 # in the other directions; Sec. II.A.2 (instrument capsule): 50 g.
@@ -63,27 +67,37 @@ class Criteria:
 LIMIT_MAX = 1e6     # g or g/s: far above any structure's (crewed limits are 10-40 g, 1000 g/s)
 
 
-def _triple(node: Node, key: str) -> tuple[float, float, float]:
-    v = node.raw(key)
-    if not (isinstance(v, list) and len(v) == 3 and all(isinstance(x, (int, float)) and not isinstance(x, bool)
-                                                       and 0 < x <= LIMIT_MAX for x in v)):
-        raise node.error(key, f"three limits from above 0 to {LIMIT_MAX:g}, one per body axis (1, 2, 3 = roll axis)",
-                         repr(v))
-    return tuple(float(x) for x in v)
+def _triple(value: Any) -> tuple[float, float, float]:
+    if not (isinstance(value, list) and len(value) == 3 and all(
+            isinstance(x, (int, float)) and not isinstance(x, bool) and 0 < x <= LIMIT_MAX for x in value)):
+        raise refuse(f"three limits from above 0 to {LIMIT_MAX:g}, one per body axis (1, 2, 3 = roll axis)",
+                     repr(value))
+    return tuple(float(x) for x in value)
+
+
+Triple = Annotated[tuple[float, float, float], PlainValidator(_triple)]
+
+
+class CriteriaTable(Table):
+    """`[criteria]`: a preset ("human", "instrument") and/or explicit limits."""
+
+    preset: Literal[tuple(PRESETS)] | None = None
+    max_xdd_g: Triple | None = None
+    max_onset_g_s: Triple | None = None
+    no_bottoming: bool = True
+    no_tumbling: bool = True
+    no_body_contact: bool = True
+    note: str = ""
+
+    def criteria(self) -> Criteria:
+        xdd, onset = PRESETS[self.preset] if self.preset else (None, None)
+        return Criteria(self.max_xdd_g or xdd, self.max_onset_g_s or onset, self.no_bottoming, self.no_tumbling,
+                        self.no_body_contact)
 
 
 def read_criteria(node: Node | None) -> Criteria | None:
-    """`[criteria]`: a preset ("human", "instrument") and/or explicit limits; None when absent."""
-    if node is None:
-        return None
-    node.allow(("preset", "max_xdd_g", "max_onset_g_s", "no_bottoming", "no_tumbling", "no_body_contact", "note"))
-    xdd, onset = PRESETS[node.string("preset", choices=tuple(PRESETS))] if node.has("preset") else (None, None)
-    xdd = _triple(node, "max_xdd_g") if node.has("max_xdd_g") else xdd
-    onset = _triple(node, "max_onset_g_s") if node.has("max_onset_g_s") else onset
-    flags = {k: node.boolean(k, True) for k in ("no_bottoming", "no_tumbling", "no_body_contact")}
-    node.string("note", "")
-    node.finish()
-    return Criteria(xdd, onset, **flags)
+    """`[criteria]` of a Node-read file; None when absent."""
+    return None if node is None else validate(CriteriaTable, node.data, node.file, node.path).criteria()
 
 
 def violation_kinds(failed: str | None) -> list[str]:

@@ -37,7 +37,7 @@ from alightsize.landings.dispersions import Dispersion, read_dispersion
 from alightsize.common.errors import InputError, InputWarning
 from alightsize.landings.criteria import Criteria, read_criteria
 from alightsize.landings.output import outcome
-from alightsize.model.scene_config import SceneConfig, load_scene_toml, read_scene
+from alightsize.model.scene_config import SceneConfig, SceneDocument, read_scene, scene_document
 from alightsize.common.units import registry
 
 BOTTOMED_KIND = {"axial": "axial", "rot": "rotational_pad", "upper": "psi", "lower": "alpha"}
@@ -54,7 +54,7 @@ RUN_ID_RULE = "1-64 letters, digits, '_', '.' or '-', not starting with '.' or '
 class Run:
     run_id: str
     scene_key: str
-    scene: Path
+    scene: SceneDocument       # the scene as read (its file's path: scene.path)
     overrides: dict
     params: dict               # what the user reads: table columns, grid values, samples (as written)
     reference: str | None
@@ -216,7 +216,7 @@ def _as_written(path: Path, where: str, scene: Path, key: str, exc: InputError, 
                       found)
 
 
-def _cell_shape(scene: Path) -> tuple[int, int]:
+def _cell_shape(scene: SceneDocument | Path) -> tuple[int, int]:
     cfg = read_scene(scene)
     return len(cfg.cell_names), len(cfg.cell_names[0])
 
@@ -258,6 +258,7 @@ def read_study(path: str | Path) -> Study:
         if not is_file(f):
             raise scenes_node.error(k, "the path of a scene TOML (relative to the study)", f"{str(f)!r}: no such file")
     scenes_node.allow(tuple(scenes))
+    documents = {k: scene_document(f) for k, f in scenes.items()}
     runs_node, grid = root.table("runs", optional=True), root.table("grid", optional=True)
     if runs_node and grid:
         raise root.error("grid", "either a run table [runs] or a [grid]", "both")
@@ -289,12 +290,12 @@ def read_study(path: str | Path) -> Study:
     head.finish()
     _check_scene_values(path, grid, dispersions, points, scenes)
     if dispersions:
-        points = _sampled(points, dispersions, samples, seed, scenes)
+        points = _sampled(points, dispersions, samples, seed, documents)
     ids = [p[0] for p in points]
     if len(set(ids)) != len(ids):
         dup = next(i for i in ids if ids.count(i) > 1)
         raise root.error("runs.id", "a unique run id per run", f"{dup!r} more than once")
-    runs = tuple(Run(pid, skey, scenes[skey], over, params, ref) for pid, skey, over, params, ref in points)
+    runs = tuple(Run(pid, skey, documents[skey], over, params, ref) for pid, skey, over, params, ref in points)
     criteria = read_criteria(root.table("criteria", optional=True))
     mat = root.table("matrix", optional=True)
     default_col = "scene" if len(scenes) > 1 else (list(points[0][3])[-1] if points[0][3] else "scene")
@@ -314,18 +315,10 @@ def read_study(path: str | Path) -> Study:
     return Study(path, name, title, runs, criteria, rows, column, history, seed, plot)
 
 
-@lru_cache(maxsize=64)
-def _scene_data(path: Path, mtime_ns: int) -> Node:
-    """The merged scene TOML of a base scene, read once per version of the file (callers copy before changing
-    it; a changed base of the scene is not seen until the scene file itself changes within one process)."""
-    return load_scene_toml(path)
-
-
 def scene_hash(run: Run) -> str:
     """SHA-256 of the run's inputs: the merged scene TOML with the overrides applied, and the version."""
-    root = _scene_data(run.scene, run.scene.stat().st_mtime_ns)
-    data = copy.deepcopy(root.data)
-    node = Node(root.file, "", data)
+    data = copy.deepcopy(run.scene.data)
+    node = Node(run.scene.path, "", data)
     for k, v in run.overrides.items():
         node.set_path(k, v)
     text = json.dumps({"scene": data, "version": __version__}, sort_keys=True, default=str)

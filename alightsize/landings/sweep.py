@@ -1,7 +1,7 @@
 """`alightsize sweep`: run a study's landings on a backend (serial, local process pool, Dask distributed) into
 the run store, skipping runs already done with the same inputs.
 
-A run is a pure function of its task (scene path, overrides, criteria), so results are identical whatever
+A run is a pure function of its task (scene as read, overrides, criteria), so results are identical whatever
 the backend, worker count or order. The parent process alone writes the store, one commit per finished
 run. A run that raises is stored `failed` with its message; a worker that dies takes no finished run with
 it (the runs it held are retried alone, and one that kills its worker twice is stored `failed`).
@@ -45,7 +45,7 @@ def task_of(study: Study, run: Run, out: Path, member_loads: MemberLoads | None 
     """What a worker needs for one run (picklable, no open handles); with `member_loads` (a module-level
     function or a partial of one) the run also stores the member-load extremes it gives for the history."""
     history = str(out / "history" / f"{run.run_id}.parquet") if study.history else None
-    return {"run_id": run.run_id, "scene_key": run.scene_key, "scene": str(run.scene), "overrides": run.overrides,
+    return {"run_id": run.run_id, "scene_key": run.scene_key, "scene": run.scene, "overrides": run.overrides,
             "scene_hash": scene_hash(run) + ("" if member_loads is None else "+loads"), "params": run.params,
             "reference": run.reference, "criteria": study.criteria, "history": history,
             "member_loads": member_loads}

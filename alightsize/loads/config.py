@@ -7,14 +7,14 @@ import re
 from dataclasses import dataclass
 from math import radians
 from pathlib import Path
+from typing import Annotated, Any, ClassVar, Literal
 
 import numpy as np
-
-from alightsize_sim.articulated_kinematics import ArticulatedGeometry
-from alightsize_sim.articulated_statics import TrussAngles
+from pydantic import Field, PlainValidator, model_validator
 
 from alightsize.common.config import Node, load_toml
-from alightsize.model.legs import LENGTHS, read_curve, read_geometry, read_truss
+from alightsize.common.typed import Number, Quantity, Table, refuse, validate
+from alightsize.model.legs import CurveTable, GeometryTable, TrussTable
 from alightsize.loads.envelopes import Grid, LegCase, default_grid
 from alightsize.loads.telescoping import TelescopingLeg
 
@@ -32,76 +32,168 @@ class LoadsConfig:
     telescoping: TelescopingLeg | None
 
 
-def _range(node: Node, name: str, lo: float, hi: float) -> tuple[float, ...]:
-    r = node.table(name)
-    r.allow(("from", "to", "step"))
-    start, stop = r.quantity("from", "angle", positive=False), r.quantity("to", "angle", positive=False)
-    step = r.quantity("step", "angle")
-    r.finish()
-    if not (lo - 1e-12 <= start <= stop <= hi + 1e-12):
-        raise r.error("to", f"{np.degrees(lo):g} deg <= from <= to <= {np.degrees(hi):g} deg",
-                      f"from {np.degrees(start):g} to {np.degrees(stop):g} deg")
-    n = int(np.floor((stop - start) / step + 1e-9))
-    return tuple(start + step * np.arange(n + 1))
+def _name(value: Any) -> str:
+    if not isinstance(value, str):
+        raise refuse("a string")
+    if not NAME.fullmatch(value):
+        raise refuse("1-31 letters, digits, '_', '.' or '-' (it names files and sheets)", repr(value))
+    return value
 
 
-def _grid(node: Node | None) -> Grid:
-    if node is None:
-        return default_grid()
-    node.allow(("alpha", "beta", "psi_step", "bottomed"))
-    base = default_grid()
-    alpha = _range(node, "alpha", 0.0, radians(90)) if node.has("alpha") else base.alpha
-    beta = _range(node, "beta", radians(-360), radians(360)) if node.has("beta") else base.beta
-    step = node.quantity("psi_step", "angle", default=base.psi_step)
-    bottomed = node.string("bottomed", "exclude", choices=("exclude", "include"))
-    node.finish()
-    return Grid(alpha, beta, step, bottomed == "include")
+Name = Annotated[str, PlainValidator(_name)]       # a name of files and sheets
+Angle = Quantity("angle", "any")
 
 
-def _name(node: Node) -> str:
-    name = node.string("name")
-    if not NAME.fullmatch(name):
-        raise node.error("name", "1-31 letters, digits, '_', '.' or '-' (it names files and sheets)", repr(name))
-    return name
+class Span(Table):
+    """Angles `from` `to` (inclusive) by `step`, within the class's [LOW, HIGH]."""
+
+    LOW: ClassVar[float]
+    HIGH: ClassVar[float]
+    start: Angle = Field(alias="from")
+    to: Angle
+    step: Quantity("angle")
+
+    @model_validator(mode="after")
+    def _within(self):
+        if not (self.LOW - 1e-12 <= self.start <= self.to <= self.HIGH + 1e-12):
+            raise refuse(f"{np.degrees(self.LOW):g} deg <= from <= to <= {np.degrees(self.HIGH):g} deg",
+                         f"from {np.degrees(self.start):g} to {np.degrees(self.to):g} deg", "to")
+        return self
+
+    def values(self) -> tuple[float, ...]:
+        n = int(np.floor((self.to - self.start) / self.step + 1e-9))
+        return tuple(self.start + self.step * np.arange(n + 1))
 
 
-def _case(node: Node, geometry: ArticulatedGeometry | None, truss: TrussAngles | None, where: Node) -> LegCase:
-    node.allow(("name", "note", "psi_initial", "psi_final", "upper", "lower", "length_scale",
-                "return_spring_rate", "return_spring_preload"))
-    if geometry is None or truss is None:
-        raise where.error("geometry" if geometry is None else "truss", "a [geometry] and a [truss] table for the "
-                          "articulated configurations", "none")
-    name = _name(node)
-    node.string("note", "")
-    p0 = node.quantity("psi_initial", "angle", positive=False)
-    p1 = node.quantity("psi_final", "angle", positive=False)
-    if not (radians(-90) < p0 < p1 < radians(90)):
-        raise node.error("psi_final", "-90 deg < psi_initial < psi_final < 90 deg",
-                         f"{np.degrees(p0):g} and {np.degrees(p1):g} deg")
-    scale = node.number("length_scale", 1.0)
-    g = geometry._replace(**{k: scale * getattr(geometry, k) for k in LENGTHS})
-    g = g._replace(SPRG=node.quantity("return_spring_rate", "spring_rate", default=g.SPRG, positive=False),
-                PLD=node.quantity("return_spring_preload", "force", default=g.PLD, positive=False))
-    if g.SPRG < 0 or g.PLD < 0:
-        raise node.error("return_spring_rate", "a return spring rate and preload of 0 or more", f"{g.SPRG}, {g.PLD}")
-    upper, lower = read_curve(node.table("upper")), read_curve(node.table("lower"))
-    node.finish()
-    return LegCase(name, g, truss, upper, lower, p0, p1)
+class AlphaSpan(Span):
+    LOW, HIGH = 0.0, radians(90)
 
 
-def _telescoping(node: Node) -> TelescopingLeg:
-    node.allow(("axial_crush", "rotational_crush", "pad_lever", "length", "bearing_length", "friction", "note"))
-    leg = TelescopingLeg(node.quantity("axial_crush", "force"), node.quantity("rotational_crush", "force"),
-                         node.quantity("pad_lever", "length"), node.quantity("length", "length"),
-                         node.quantity("bearing_length", "length"), node.number("friction", positive=False))
-    node.string("note", "")
-    node.finish()
-    if leg.pad_lever >= leg.length:
-        raise node.error("pad_lever", f"a pad lever shorter than the leg ({leg.length:.4g} m)",
-                         f"{leg.pad_lever:.4g} m")
-    if not 0 <= leg.friction < 1:
-        raise node.error("friction", "a friction coefficient in [0, 1)", f"{leg.friction}")
-    return leg
+class BetaSpan(Span):
+    LOW, HIGH = radians(-360), radians(360)
+
+
+_GRID = default_grid()
+
+
+class GridTable(Table):
+    alpha: AlphaSpan | None = None
+    beta: BetaSpan | None = None
+    psi_step: Quantity("angle") = _GRID.psi_step
+    bottomed: Literal["exclude", "include"] = "exclude"
+
+    def grid(self) -> Grid:
+        return Grid(self.alpha.values() if self.alpha else _GRID.alpha, self.beta.values() if self.beta else _GRID.beta,
+                    self.psi_step, self.bottomed == "include")
+
+
+class Configuration(Table):
+    """One articulated configuration: its psi range and cells, over the file's geometry and truss."""
+
+    name: Name
+    note: str = ""
+    psi_initial: Angle
+    psi_final: Angle
+    upper: CurveTable
+    lower: CurveTable
+    length_scale: Number() = 1.0
+    return_spring_rate: Quantity("spring_rate", "nonnegative") | None = None
+    return_spring_preload: Quantity("force", "nonnegative") | None = None
+
+    @model_validator(mode="after")
+    def _psi(self):
+        p0, p1 = self.psi_initial, self.psi_final
+        if not (radians(-90) < p0 < p1 < radians(90)):
+            raise refuse("-90 deg < psi_initial < psi_final < 90 deg", f"{np.degrees(p0):g} and {np.degrees(p1):g} deg",
+                         "psi_final")
+        return self
+
+    def case(self, geometry: GeometryTable, truss: TrussTable) -> LegCase:
+        g = geometry.geometry(self.length_scale)
+        g = g._replace(SPRG=g.SPRG if self.return_spring_rate is None else self.return_spring_rate,
+                       PLD=g.PLD if self.return_spring_preload is None else self.return_spring_preload)
+        return LegCase(self.name, g, truss.truss(), self.upper.curve(), self.lower.curve(), self.psi_initial,
+                       self.psi_final)
+
+
+class Combined(Table):
+    name: Name
+    configurations: list[str]
+    note: str = ""
+
+
+class TelescopingTable(Table):
+    """The App. III free body of the telescoping leg."""
+
+    axial_crush: Quantity("force")
+    rotational_crush: Quantity("force")
+    pad_lever: Quantity("length")
+    length: Quantity("length")
+    bearing_length: Quantity("length")
+    friction: Number("any")
+    note: str = ""
+
+    @model_validator(mode="after")
+    def _ranges(self):
+        if self.pad_lever >= self.length:
+            raise refuse(f"a pad lever shorter than the leg ({self.length:.4g} m)", f"{self.pad_lever:.4g} m",
+                         "pad_lever")
+        if not 0 <= self.friction < 1:
+            raise refuse("a friction coefficient in [0, 1)", f"{self.friction}", "friction")
+        return self
+
+    def leg(self) -> TelescopingLeg:
+        return TelescopingLeg(self.axial_crush, self.rotational_crush, self.pad_lever, self.length,
+                              self.bearing_length, self.friction)
+
+
+class LoadsHead(Table):
+    title: str | None = None
+
+
+class LoadsReport(Table):
+    units: Literal["US", "SI"] = "US"
+
+
+class LoadsFile(Table):
+    """A loads config (docs/reference/loads.md)."""
+
+    loads: LoadsHead = LoadsHead()
+    report: LoadsReport = LoadsReport()
+    geometry: GeometryTable | None = None
+    truss: TrussTable | None = None
+    grid: GridTable = GridTable()
+    configuration: list[Configuration] = []
+    combined: list[Combined] = []
+    telescoping: TelescopingTable | None = None
+
+    @model_validator(mode="after")
+    def _consistent(self):
+        if self.configuration and (self.geometry is None or self.truss is None):
+            raise refuse("a [geometry] and a [truss] table for the articulated configurations", "none",
+                         "geometry" if self.geometry is None else "truss")
+        names = [c.name for c in self.configuration]
+        dup = next((n for n in names if names.count(n) > 1), None)
+        if dup:
+            raise refuse("configuration names unique", f"{dup!r} twice", "configuration")
+        check_combined(names, self.combined)
+        if not self.configuration and self.telescoping is None:
+            raise refuse("at least one [[configuration]] or a [telescoping] table", "neither", "configuration")
+        return self
+
+
+def check_combined(names: list[str], combined: list[Combined]) -> None:
+    """Each combination names configurations of `names` and is named apart from them and the others."""
+    taken = set(names)
+    for i, c in enumerate(combined):
+        missing = [m for m in c.configurations if m not in names]
+        if missing or not c.configurations:
+            raise refuse("names of configurations in this file (" + ", ".join(names) + ")",
+                         repr(missing or c.configurations), f"combined[{i}].configurations")
+        if c.name in taken:
+            raise refuse("a name not used by a configuration or another combination", repr(c.name),
+                         f"combined[{i}].name")
+        taken.add(c.name)
 
 
 def read_loads(path: str | Path, root: Node | None = None) -> LoadsConfig:
@@ -109,38 +201,8 @@ def read_loads(path: str | Path, root: Node | None = None) -> LoadsConfig:
     problems are InputErrors naming file and key path."""
     path = Path(path)
     root = load_toml(path) if root is None else root
-    root.allow(("loads", "report", "geometry", "truss", "grid", "configuration", "combined", "telescoping"))
-    head = root.table("loads", optional=True)
-    title = head.string("title", path.stem) if head else path.stem
-    if head:
-        head.finish()
-    rep = root.table("report", optional=True)
-    units = rep.string("units", "US", choices=("US", "SI")) if rep else "US"
-    if rep:
-        rep.finish()
-    geometry = read_geometry(root.table("geometry")) if root.has("geometry") else None
-    truss = read_truss(root.table("truss")) if root.has("truss") else None
-    grid = _grid(root.table("grid", optional=True))
-    cases = tuple(_case(n, geometry, truss, root) for n in root.tables("configuration", optional=True))
-    names = [c.name for c in cases]
-    dup = next((n for n in names if names.count(n) > 1), None)
-    if dup:
-        raise root.error("configuration", "configuration names unique", f"{dup!r} twice")
-    combined = []
-    for n in root.tables("combined", optional=True):
-        n.allow(("name", "configurations", "note"))
-        name, members = _name(n), n.strings("configurations")
-        n.string("note", "")
-        n.finish()
-        missing = [m for m in members if m not in names]
-        if missing or not members:
-            raise n.error("configurations", "names of configurations in this file (" + ", ".join(names) + ")",
-                          repr(missing or members))
-        if name in names or name in [c[0] for c in combined]:
-            raise n.error("name", "a name not used by a configuration or another combination", repr(name))
-        combined.append((name, tuple(members)))
-    tele = _telescoping(root.table("telescoping")) if root.has("telescoping") else None
-    root.finish()
-    if not cases and tele is None:
-        raise root.error("configuration", "at least one [[configuration]] or a [telescoping] table", "neither")
-    return LoadsConfig(path, title, units, grid, cases, tuple(combined), tele)
+    f = validate(LoadsFile, root.data, root.file, root.path)
+    cases = tuple(c.case(f.geometry, f.truss) for c in f.configuration)
+    return LoadsConfig(path, f.loads.title if f.loads.title is not None else path.stem, f.report.units,
+                       f.grid.grid(), cases, tuple((c.name, tuple(c.configurations)) for c in f.combined),
+                       f.telescoping.leg() if f.telescoping else None)

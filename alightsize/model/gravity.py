@@ -8,7 +8,12 @@ from __future__ import annotations
 
 from alightsize_sim.landing import G0
 
-from alightsize.common.config import Node
+from typing import Annotated
+
+from pydantic import PlainValidator
+
+from alightsize.common import units
+from alightsize.common.typed import refuse
 
 BODIES = {
     "earth": G0,        # standard gravity (CGPM 1901)
@@ -20,18 +25,23 @@ BODIES = {
 G_MIN, G_MAX = 1e-6, 100.0      # m/s^2: below a comet's (67P, about 2e-4) to ten Earth g (Jupiter's is 24.8)
 
 
-def read_gravity(node: Node, key: str) -> float:
-    """The surface gravity at `key` in m/s^2: a body's name or an acceleration ("1.62 m/s^2"); Earth if
-    absent. From G_MIN to G_MAX: zero is refused (the tip-over and rest criteria need a "down"; a landing in
-    near free fall takes a small value and runs to its time limit)."""
-    value = node.raw(key, "earth")
+def _gravity(value) -> float:
+    """The surface gravity in m/s^2 of a body's name or an acceleration ("1.62 m/s^2"), from G_MIN to G_MAX:
+    zero is refused (the tip-over and rest criteria need a "down"; a landing in near free fall takes a small
+    value and runs to its time limit)."""
     if isinstance(value, str) and value.strip().lower() in BODIES:
         return BODIES[value.strip().lower()]
     if isinstance(value, str) and value.strip().isalpha():
-        raise node.error(key, f"one of {', '.join(BODIES)} or an acceleration with units", repr(value))
-    g = node.parse_quantity(key, value, "acceleration", positive=False)
+        raise refuse(f"one of {', '.join(BODIES)} or an acceleration with units", repr(value))
+    try:
+        g = units.parse(value, "acceleration")
+    except ValueError as exc:
+        raise refuse(str(exc)) from None
     if not G_MIN <= g <= G_MAX:
-        raise node.error(key, f"a surface gravity from {G_MIN:g} to {G_MAX:g} m/s^2 (it points down the terrain "
-                         "normal; zero leaves no down for the tip-over and rest criteria: give a small value such "
-                         "as \"1e-6 m/s^2\" for near free fall)", repr(value))
+        raise refuse(f"a surface gravity from {G_MIN:g} to {G_MAX:g} m/s^2 (it points down the terrain "
+                     "normal; zero leaves no down for the tip-over and rest criteria: give a small value such "
+                     "as \"1e-6 m/s^2\" for near free fall)", repr(value))
     return g
+
+
+Gravity = Annotated[float, PlainValidator(_gravity)]

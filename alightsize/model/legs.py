@@ -1,4 +1,4 @@
-"""Readers of a leg's model: crush-cell curves, the articulated leg's geometry (App. III lengths) and its
+"""Models of a leg's input tables: crush-cell curves, the articulated leg's geometry (App. III lengths) and its
 truss angles. Read and validated at the boundary; SI inside."""
 
 from __future__ import annotations
@@ -11,58 +11,86 @@ from alightsize_sim.articulated_kinematics import ArticulatedGeometry
 from alightsize_sim.articulated_statics import TrussAngles
 from alightsize_sim.crush_curve import CrushCurve
 
-from alightsize.common.config import Node
+from pydantic import model_validator
+
+from alightsize.common.typed import Number, Quantities, Quantity, Table, refuse
 
 LENGTHS = ("AU", "AD", "AS", "AL", "AO", "AE", "AA", "AB", "AG", "AH", "AP", "AQ")
-POSITIVE = ("AU", "AD", "AS", "AL")
 
 
-def _quantities(node: Node, name: str, dim: str) -> list[float]:
-    values = node.raw(name)
-    if not isinstance(values, list) or len(values) < 2:
-        raise node.error(name, f"an array of two or more {dim} quantities", repr(values))
-    return [node.parse_quantity(f"{name}[{i}]", v, dim, positive=False) for i, v in enumerate(values)]
+Length = Quantity("length")
+LengthSigned = Quantity("length", "any")
 
 
-def read_curve(node: Node, extra: tuple[str, ...] = ()) -> CrushCurve:
-    """A crush curve table (deflection, force, factor, note); with `extra` keys allowed the caller reads
-    them and finishes the node."""
-    node.allow(("deflection", "force", "factor", "note", *extra))
-    d = _quantities(node, "deflection", "length")
-    f = _quantities(node, "force", "force")
-    factor = node.number("factor", 1.0)
-    node.string("note", "")
-    if not extra:
-        node.finish()
-    if len(d) != len(f):
-        raise node.error("force", f"as many forces as deflections ({len(d)})", f"{len(f)}")
-    if d[0] < 0 or any(b < a for a, b in zip(d, d[1:])):
-        raise node.error("deflection", "deflections from 0 upward, never decreasing", repr(node.raw("deflection")))
-    if any(x < 0 for x in f):
-        raise node.error("force", "forces of 0 or more (a cell never pulls)", repr(node.raw("force")))
-    return CrushCurve(tuple(d), tuple(factor * x for x in f))
+class CurveTable(Table):
+    """A crush cell's loading curve: force against deflection through the points given (Fig. 19)."""
+
+    deflection: Quantities("length", minimum=2)
+    force: Quantities("force", minimum=2)
+    factor: Number() = 1.0
+    note: str = ""
+
+    @model_validator(mode="after")
+    def _shape(self):
+        d, f = self.deflection, self.force
+        if len(d) != len(f):
+            raise refuse(f"as many forces as deflections ({len(d)})", f"{len(f)}", "force")
+        if d[0] < 0 or any(b < a for a, b in zip(d, d[1:])):
+            raise refuse("deflections from 0 upward, never decreasing", repr(list(d)), "deflection")
+        if any(x < 0 for x in f):
+            raise refuse("forces of 0 or more (a cell never pulls)", repr(list(f)), "force")
+        return self
+
+    def curve(self) -> CrushCurve:
+        return CrushCurve(self.deflection, tuple(self.factor * x for x in self.force))
 
 
-def read_geometry(node: Node) -> ArticulatedGeometry:
-    node.allow(LENGTHS + ("PHI", "return_spring_rate", "return_spring_preload", "note"))
-    dims = {k: node.quantity(k, "length") if k in POSITIVE else node.quantity(k, "length", default=0.0, positive=False)
-            for k in LENGTHS}
-    phi = node.quantity("PHI", "angle", default=0.0, positive=False)
-    sprg = node.quantity("return_spring_rate", "spring_rate", default=0.0, positive=False)
-    pld = node.quantity("return_spring_preload", "force", default=0.0, positive=False)
-    node.string("note", "")
-    node.finish()
-    if sprg < 0 or pld < 0:
-        raise node.error("return_spring_rate", "a return spring rate and preload of 0 or more", f"{sprg}, {pld}")
-    return ArticulatedGeometry(PHI=phi, SPRG=sprg, PLD=pld, **dims)
+class GeometryTable(Table):
+    """The articulated leg's geometry, FORTRAN names of Fig. 22-25 (docs/reference/scene.md)."""
+
+    AU: Length
+    AD: Length
+    AS: Length
+    AL: Length
+    AO: LengthSigned = 0.0
+    AE: LengthSigned = 0.0
+    AA: LengthSigned = 0.0
+    AB: LengthSigned = 0.0
+    AG: LengthSigned = 0.0
+    AH: LengthSigned = 0.0
+    AP: LengthSigned = 0.0
+    AQ: LengthSigned = 0.0
+    PHI: Quantity("angle", "any") = 0.0
+    return_spring_rate: Quantity("spring_rate", "any") = 0.0
+    return_spring_preload: Quantity("force", "any") = 0.0
+    note: str = ""
+
+    @model_validator(mode="after")
+    def _springs(self):
+        sprg, pld = self.return_spring_rate, self.return_spring_preload
+        if sprg < 0 or pld < 0:
+            raise refuse("a return spring rate and preload of 0 or more", f"{sprg}, {pld}", "return_spring_rate")
+        return self
+
+    def geometry(self, scale: float = 1.0) -> ArticulatedGeometry:
+        return ArticulatedGeometry(PHI=self.PHI, SPRG=self.return_spring_rate, PLD=self.return_spring_preload,
+                                   **{k: scale * getattr(self, k) for k in LENGTHS})
 
 
-def read_truss(node: Node) -> TrussAngles:
-    node.allow(("theta", "gamma", "rho", "note"))
-    a = {k: node.quantity(k, "angle") for k in ("theta", "gamma", "rho")}
-    node.string("note", "")
-    node.finish()
-    if not all(0 < v < radians(90) for v in a.values()) or a["gamma"] + a["rho"] >= radians(180):
-        raise node.error("theta", "truss angles between 0 and 90 deg",
-                         ", ".join(f"{np.degrees(v):.4g} deg" for v in a.values()))
-    return TrussAngles(**a)
+class TrussTable(Table):
+    """The parallelogram truss's member angles (Fig. 104-105)."""
+
+    theta: Quantity("angle")
+    gamma: Quantity("angle")
+    rho: Quantity("angle")
+    note: str = ""
+
+    @model_validator(mode="after")
+    def _angles(self):
+        a = (self.theta, self.gamma, self.rho)
+        if not all(0 < v < radians(90) for v in a) or self.gamma + self.rho >= radians(180):
+            raise refuse("truss angles between 0 and 90 deg", ", ".join(f"{np.degrees(v):.4g} deg" for v in a), "theta")
+        return self
+
+    def truss(self) -> TrussAngles:
+        return TrussAngles(self.theta, self.gamma, self.rho)

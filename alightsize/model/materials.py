@@ -6,11 +6,12 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from pydantic import model_validator
+
 from alightsize.common.config import Node, is_dir, is_file, load_toml
+from alightsize.common.typed import Number, Quantity, Table, refuse, validate
 from alightsize.common.errors import InputError
 from alightsize.common.resources import data_dir
-
-_PROPS = {"yield_strength": "stress", "density": "density", "elastic_modulus": "stress", "crush_strength": "stress"}
 
 
 @dataclass(frozen=True)
@@ -36,31 +37,38 @@ class Material:
         return v
 
 
+class MaterialFile(Table):
+    """A material file (docs/reference/materials.md)."""
+
+    name: str
+    density: Quantity("density")
+    yield_strength: Quantity("stress") | None = None
+    elastic_modulus: Quantity("stress") | None = None
+    poisson_m: Number() | None = None
+    crush_strength: Quantity("stress") | None = None
+    stroke_fraction: Number() | None = None
+    source: dict[str, str] = {}
+
+    @model_validator(mode="after")
+    def _stroke(self):
+        if self.stroke_fraction is not None and not 0 < self.stroke_fraction <= 1:
+            raise refuse("the usable stroke as a fraction of the core length, in (0, 1]", repr(self.stroke_fraction),
+                         "stroke_fraction")
+        return self
+
+
 def read_material(path: str | Path) -> Material:
-    node = load_toml(path)
-    values = {p: node.quantity(p, dim, default=None) for p, dim in _PROPS.items()}
-    if values["density"] is None:
-        raise node.error("density", "a density like \"0.100 lb/in^3\"", "nothing")
-    m = node.number("poisson_m", default=None)
-    eta = node.number("stroke_fraction", default=None)
-    if eta is not None and not 0 < eta <= 1:
-        raise node.error("stroke_fraction", "the usable stroke as a fraction of the core length, in (0, 1]", repr(eta))
-    src = node.table("source", optional=True)
-    source = {k: src.string(k) for k in list(src.data)} if src else {}
-    if src:
-        src.finish()
-    mat = Material(Path(path).stem, node.string("name"), poisson_m=m, stroke_fraction=eta, source=source, **values)
-    node.finish()
-    return mat
+    f = validate(MaterialFile, load_toml(path).data, str(path))
+    return Material(Path(path).stem, **f.model_dump())
 
 
-def material_paths(node: Node, key: str, base: Path) -> list[Path]:
+def material_paths(texts: list[str], base: Path, file: str, key: str) -> list[Path]:
     """The extra material files or folders a config lists at `key`, relative to `base` (its folder)."""
     out = []
-    for text in node.strings(key, []):
+    for text in texts:
         path = base / text
         if not text.strip() or not (path.suffix == ".toml" and is_file(path) or is_dir(path)):
-            raise node.error(key, "paths of material files (.toml) or folders of them, relative to this file",
+            raise InputError(file, key, "paths of material files (.toml) or folders of them, relative to this file",
                              repr(text))
         out.append(path)
     return out

@@ -9,10 +9,14 @@ Appendix VIII. Principal axes come from the eigen-decomposition of the inertia t
 
 from __future__ import annotations
 
+import copy
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Annotated, Any, Literal
 
 import numpy as np
+from pydantic import PlainValidator, ValidationInfo, field_validator, model_validator
+from pydantic_core import PydanticCustomError
 
 from alightsize_sim.crush_cell import CellModel
 from alightsize_sim.landing import G0, Controls, Scene
@@ -22,11 +26,13 @@ from alightsize_sim.articulated_leg import ArticulatedLeg
 from alightsize_sim.telescoping_leg import TelescopingLeg
 from alightsize_sim.terrain import Box, HeightField, Hemisphere, Step, Terrain
 
-from alightsize.common.config import Node, is_file, load_toml
-from alightsize.model.gravity import read_gravity
-from alightsize.model.legs import LENGTHS, read_curve, read_geometry
+from alightsize.common.config import Node, _describe, is_file, load_toml
+from alightsize.common.errors import InputError, warn_input
+from alightsize.common.typed import Integer, Tagged, Number, Quantities, Quantity, Table, quantity, refuse, validate
+from alightsize.model.envelope import Envelope
+from alightsize.model.gravity import Gravity
+from alightsize.model.legs import CurveTable, GeometryTable
 from alightsize.model.soils import find_soil
-
 
 
 @dataclass(frozen=True)
@@ -41,13 +47,6 @@ class SceneConfig:
     output_interval: float | None
     srs_damping: float
     cell_names: tuple[tuple[str, ...], ...]
-
-
-def _vector(node: Node, name: str, dim: str, count: int = 3, positive: bool = False) -> np.ndarray:
-    values = node.raw(name)
-    if not isinstance(values, list) or len(values) != count:
-        raise node.error(name, f"an array of {('two', 'three')[count - 2]} {dim} quantities", repr(values))
-    return np.array([node.parse_quantity(f"{name}[{i}]", v, dim, positive=positive) for i, v in enumerate(values)])
 
 
 def rot(axis: int, angle: float) -> np.ndarray:
@@ -76,168 +75,6 @@ def principal_axes(inertia: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return out, cols
 
 
-def _cell(node: Node, factor: float = 1.0) -> CellModel:
-    curve = read_curve(node, extra=("unloading_rate", "damping", "yield_force"))
-    k = node.quantity("unloading_rate", "spring_rate")
-    c = node.quantity("damping", "damping", positive=False) if node.has("damping") else 0.0
-    y = node.quantity("yield_force", "force") if node.has("yield_force") else None
-    node.finish()
-    if c < 0:
-        raise node.error("damping", "a damping coefficient >= 0", f"{c}")
-    return CellModel(curve, k, c, factor, y)
-
-
-def _cell_name(node: Node, key: str, cells: dict[str, Node]) -> str:
-    name = node.string(key)
-    if name not in cells:
-        raise node.error(key, "the name of a [cells.NAME] table (" + ", ".join(sorted(cells)) + ")", repr(name))
-    return name
-
-
-def _factors(node: Node, n: int, n_cell: int, what: str) -> list[list[float]]:
-    factors = node.raw("cell_factors", None)
-    if factors is None:
-        return [[1.0] * n_cell for _ in range(n)]
-    ok = (isinstance(factors, list) and len(factors) == n and all(
-        isinstance(r, list) and len(r) == n_cell and all(isinstance(x, (int, float)) and not isinstance(x, bool)
-                                                            and x > 0 for x in r) for r in factors))
-    if not ok:
-        raise node.error("cell_factors", f"{n} arrays (one per leg) of {n_cell} positive force factors ({what})",
-                         repr(factors))
-    return [[float(x) for x in r] for r in factors]
-
-
-def _legs(node: Node, cells: dict[str, Node]) -> list[dict]:
-    """A pattern of identical legs around the roll axis: count, radius, height, first azimuth."""
-    kind = node.string("kind", "telescoping", choices=("telescoping", "articulated"))
-    if kind == "articulated":
-        return _articulated_legs(node, cells)
-    node.allow(("kind", "count", "radius", "height", "first_azimuth", "length", "pad_lever", "pad_angles", "axial",
-                "pads", "cell_factors", "small_angle", "footpad_mass", "footpad_band", "footpad_diameter", "note"))
-    n, radius, height, az0 = _pattern(node)
-    pad_mass, pad_band, pad_diameter = _footpad_mass(node), _footpad_band(node), _footpad_diameter(node)
-    rho = node.quantity("length", "length")
-    lever = node.quantity("pad_lever", "length", 0.0, positive=False) if node.has("pad_lever") else 0.0
-    angles_raw = node.raw("pad_angles", [])
-    if not isinstance(angles_raw, list):
-        raise node.error("pad_angles", "an array of angles", repr(angles_raw))
-    angles = tuple(node.parse_quantity(f"pad_angles[{i}]", a, "angle", positive=False)
-                   for i, a in enumerate(angles_raw))
-    axial = _cell_name(node, "axial", cells)
-    pads = _cell_name(node, "pads", cells) if angles else ""
-    factors = _factors(node, n, 1 + len(angles), "axial, then each pad")
-    small = node.boolean("small_angle", False)
-    node.string("note", "")
-    node.finish()
-    if not 0 <= lever < rho:
-        raise node.error("pad_lever", f"a pad lever from 0 to less than the leg ({rho:.4g} m)", f"{lever:.4g} m")
-    legs = []
-    for i in range(n):
-        az = az0 + 2 * np.pi * i / n
-        legs.append(dict(kind=kind, attach=np.array([radius * np.cos(az), radius * np.sin(az), height]), rho=rho,
-                         lever=lever, angles=angles, axial=axial, pads=pads, small=small, factors=factors[i],
-                         footpad_mass=pad_mass, footpad_band=pad_band, footpad_diameter=pad_diameter))
-    return legs
-
-
-def _features(ter: Node, path: Path) -> Terrain:
-    """Steps, rocks and a height field on the terrain plane (terrain axes: x, y in the plane, from the point
-    under the capsule's CG at first contact; docs/terrain.md)."""
-    steps = []
-    for n in ter.tables("steps", optional=True):
-        n.allow(("x", "y", "direction", "height", "note"))
-        steps.append(Step(n.quantity("x", "length", positive=False), n.quantity("y", "length", positive=False),
-                          float(np.degrees(n.quantity("direction", "angle", positive=False))),
-                          n.quantity("height", "length", positive=False)))
-        n.string("note", "")
-        n.finish()
-    hemispheres, boxes = [], []
-    for n in ter.tables("rocks", optional=True):
-        shape = n.string("shape", choices=("hemisphere", "box"))
-        x, y = n.quantity("x", "length", positive=False), n.quantity("y", "length", positive=False)
-        if shape == "hemisphere":
-            n.allow(("shape", "x", "y", "radius", "note"))
-            hemispheres.append(Hemisphere(x, y, n.quantity("radius", "length")))
-        else:
-            n.allow(("shape", "x", "y", "length", "width", "height", "yaw", "note"))
-            yaw = n.quantity("yaw", "angle", positive=False) if n.has("yaw") else 0.0
-            boxes.append(Box(x, y, n.quantity("length", "length"), n.quantity("width", "length"),
-                             n.quantity("height", "length"), float(np.degrees(yaw))))
-        n.string("note", "")
-        n.finish()
-    field = None
-    f = ter.table("height_field", optional=True)
-    if f:
-        f.allow(("file", "spacing", "origin", "note"))
-        name = f.string("file")
-        spacing = _vector(f, "spacing", "length", 2, positive=True)
-        origin = _vector(f, "origin", "length", 2) if f.has("origin") else np.zeros(2)
-        f.string("note", "")
-        f.finish()
-        try:
-            field = HeightField.from_file(path.parent / name, *map(float, spacing), *map(float, origin))
-        except (OSError, ValueError) as exc:
-            raise f.error("file", "a .npy or .csv grid of finite heights (m), at least 2 x 2", str(exc)) from None
-    return Terrain(tuple(steps), tuple(hemispheres), tuple(boxes), field)
-
-
-FOOTPAD_MASS_MIN = 0.01     # kg: measured on configuration 5's footpad scene, 0.01 kg lands in 90k steps, 1 g does not
-
-
-def _footpad_mass(node: Node) -> float:
-    """Each footpad's mass (0, the default: massless footpads, the report's model; alightsize_sim.footpad_mass)."""
-    mass = node.quantity("footpad_mass", "mass", positive=False) if node.has("footpad_mass") else 0.0
-    if not (mass == 0.0 or FOOTPAD_MASS_MIN <= mass):
-        raise node.error("footpad_mass", f"0 (massless footpads) or a mass of {FOOTPAD_MASS_MIN:g} kg or more (a "
-                         "lighter footpad rings on its leg faster than any step can follow)",
-                         repr(node.raw("footpad_mass")))
-    return mass
-
-
-def _footpad_band(node: Node) -> float:
-    """The Karnopp velocity band of footpads with mass (alightsize_sim.footpad_mass; Scene's default)."""
-    return node.quantity("footpad_band", "velocity") if node.has("footpad_band") else Scene.footpad_band
-
-
-def _footpad_diameter(node: Node) -> float:
-    """Each footpad's diameter: round footpads bearing on soil (0, the default: not given)."""
-    return node.quantity("footpad_diameter", "length") if node.has("footpad_diameter") else 0.0
-
-
-def _pattern(node: Node) -> tuple[int, float, float, float]:
-    n = node.integer("count", minimum=2)
-    radius = node.quantity("radius", "length")
-    height = node.quantity("height", "length", positive=False)
-    az0 = node.quantity("first_azimuth", "angle", 0.0, positive=False) if node.has("first_azimuth") else 0.0
-    return n, radius, height, az0
-
-
-def _articulated_legs(node: Node, cells: dict[str, Node]) -> list[dict]:
-    """Articulated legs (Sec. V.F): the leg origin (lower inboard parallelogram pivot) at radius and height, S1
-    outward along the azimuth, S3 along the roll axis; the geometry of Fig. 22-25 and the initial psi."""
-    node.allow(("kind", "count", "radius", "height", "first_azimuth", "geometry", "length_scale", "psi_initial",
-                "upper", "lower", "cell_factors", "footpad_mass", "footpad_band", "footpad_diameter", "note"))
-    n, radius, height, az0 = _pattern(node)
-    pad_mass, pad_band, pad_diameter = _footpad_mass(node), _footpad_band(node), _footpad_diameter(node)
-    geometry = read_geometry(node.table("geometry"))
-    scale = node.number("length_scale", 1.0)
-    geometry = geometry._replace(**{k: scale * getattr(geometry, k) for k in LENGTHS})   # test-model scaling (Table 27)
-    psi0 = node.quantity("psi_initial", "angle", positive=False)
-    if not -np.pi / 2 < psi0 < np.pi / 2:
-        raise node.error("psi_initial", "an angle between -90 and 90 deg", f"{np.degrees(psi0):.4g} deg")
-    upper, lower = _cell_name(node, "upper", cells), _cell_name(node, "lower", cells)
-    factors = _factors(node, n, 2, "upper, lower")
-    node.string("note", "")
-    node.finish()
-    legs = []
-    for i in range(n):
-        az = az0 + 2 * np.pi * i / n
-        legs.append(dict(kind="articulated", attach=np.array([radius * np.cos(az), radius * np.sin(az), height]),
-                         azimuth=az, geometry=geometry, psi0=psi0, upper=upper, lower=lower, factors=factors[i],
-                         footpad_mass=pad_mass, footpad_band=pad_band, footpad_diameter=pad_diameter))
-    return legs
-
-
 def _inclination_attitude(roll: float, theta: float, azimuth: float) -> tuple[float, float]:
     """(yaw, pitch) that tilt the roll axis by theta toward kappa azimuth `azimuth` at a given roll: chi-3 in
     kappa = (sR sP + cR sY cP, -cR sP + sR sY cP, cY cP) (eq. 2) set to (s cos az, s sin az, cos theta)."""
@@ -246,6 +83,321 @@ def _inclination_attitude(roll: float, theta: float, azimuth: float) -> tuple[fl
     pitch = np.arcsin(np.clip(sp, -1, 1))
     yaw = np.arctan2(s * np.cos(roll - azimuth), np.cos(theta))
     return float(yaw), float(pitch)
+
+
+
+
+Length, LengthSigned, Angle = Quantity("length"), Quantity("length", "any"), Quantity("angle", "any")
+Time = Quantity("time")
+
+
+@dataclass(frozen=True)
+class SceneDocument:
+    """A scene as read from its file(s): the TOML of its `scene.base` chain merged, or a lander file's nominal
+    landing; picklable, so a landing task validates it with its own overrides without reading a file."""
+
+    path: Path
+    data: dict
+
+
+class SceneHead(Table):
+    name: str | None = None
+    title: str | None = None
+    gravity: Gravity = G0
+    base: str | None = None          # merged away by `scene_document`
+
+
+def _inertia(value: Any) -> np.ndarray:
+    """Three principal moments or a symmetric 3x3 tensor about the CG (geometric axes), kg m^2."""
+    def one(v, key, positive):
+        try:
+            return quantity(v, "inertia", "positive" if positive else "any")
+        except PydanticCustomError as exc:
+            raise refuse(exc.context["expected"], _describe(v), key) from None
+    if isinstance(value, list) and len(value) == 3 and not any(isinstance(r, list) for r in value):
+        return np.diag([one(v, f"[{i}]", True) for i, v in enumerate(value)])
+    if isinstance(value, list) and len(value) == 3 and all(isinstance(r, list) and len(r) == 3 for r in value):
+        tensor = np.array([[one(v, f"[{i}][{j}]", i == j) for j, v in enumerate(row)] for i, row in enumerate(value)])
+        if not np.allclose(tensor, tensor.T, rtol=1e-9, atol=0):
+            raise refuse("a symmetric tensor", "I_ij != I_ji")
+        return tensor
+    raise refuse("three principal moments or a 3x3 tensor about the CG (geometric axes)", repr(value))
+
+
+class Capsule(Table):
+    weight: Quantity("force") | None = None
+    mass: Quantity("mass") | None = None
+    inertia: Annotated[np.ndarray, PlainValidator(_inertia)]
+    cg: Quantities("length", count=3) = (0.0, 0.0, 0.0)
+    bottom: Length | None = None
+    note: str = ""
+
+    @model_validator(mode="after")
+    def _mass(self):
+        if (self.weight is None) == (self.mass is None):
+            raise refuse("exactly one of weight (force) or mass", "neither" if self.mass is None else "both", "weight")
+        return self
+
+
+class Cell(CurveTable):
+    unloading_rate: Quantity("spring_rate")
+    damping: Quantity("damping", "any") = 0.0
+    yield_force: Quantity("force") | None = None
+
+    @model_validator(mode="after")
+    def _damping(self):
+        if self.damping < 0:
+            raise refuse("a damping coefficient >= 0", f"{self.damping}", "damping")
+        return self
+
+    def model(self, factor: float = 1.0) -> CellModel:
+        return CellModel(self.curve(), self.unloading_rate, self.damping, factor, self.yield_force)
+
+
+FOOTPAD_MASS_MIN = 0.01     # kg: measured on configuration 5's footpad scene, 0.01 kg lands in 90k steps, 1 g does not
+
+
+def _factors(value: Any) -> tuple[tuple[float, ...], ...]:
+    ok = isinstance(value, list) and all(isinstance(r, list) and all(
+        isinstance(x, (int, float)) and not isinstance(x, bool) and x > 0 for x in r) for r in value)
+    if not ok:
+        raise refuse("arrays (one per leg) of positive force factors", repr(value))
+    return tuple(tuple(float(x) for x in r) for r in value)
+
+
+class Legs(Table):
+    """A pattern of identical legs around the roll axis: count, radius, height, first azimuth."""
+
+    count: Integer(2)
+    radius: Length
+    height: LengthSigned
+    first_azimuth: Angle = 0.0
+    cell_factors: Annotated[tuple, PlainValidator(_factors)] | None = None
+    footpad_mass: Quantity("mass", "any") = 0.0
+    footpad_band: Quantity("velocity") = Scene.footpad_band
+    footpad_diameter: Length = 0.0
+    note: str = ""
+
+    def _check(self, n_cell: int, what: str):
+        if not (self.footpad_mass == 0.0 or FOOTPAD_MASS_MIN <= self.footpad_mass):
+            raise refuse(f"0 (massless footpads) or a mass of {FOOTPAD_MASS_MIN:g} kg or more (a lighter footpad "
+                         "rings on its leg faster than any step can follow)", f"{self.footpad_mass:g} kg",
+                         "footpad_mass")
+        f = self.cell_factors
+        if f is not None and (len(f) != self.count or any(len(r) != n_cell for r in f)):
+            raise refuse(f"{self.count} arrays (one per leg) of {n_cell} positive force factors ({what})", repr(f),
+                         "cell_factors")
+        return self
+
+    def factors(self, n_cell: int) -> tuple[tuple[float, ...], ...]:
+        return self.cell_factors or tuple((1.0,) * n_cell for _ in range(self.count))
+
+    def attachments(self) -> list[tuple[float, np.ndarray]]:
+        """(azimuth, attachment point in chi) of each leg."""
+        out = []
+        for i in range(self.count):
+            az = self.first_azimuth + 2 * np.pi * i / self.count
+            out.append((az, np.array([self.radius * np.cos(az), self.radius * np.sin(az), self.height])))
+        return out
+
+
+class TelescopingLegs(Legs):
+    kind: Literal["telescoping"] = "telescoping"
+    length: Length
+    pad_lever: LengthSigned = 0.0
+    pad_angles: Quantities("angle") = ()
+    axial: str
+    pads: str = ""
+    small_angle: bool = False
+
+    @model_validator(mode="after")
+    def _lever(self):
+        if not 0 <= self.pad_lever < self.length:
+            raise refuse(f"a pad lever from 0 to less than the leg ({self.length:.4g} m)", f"{self.pad_lever:.4g} m",
+                         "pad_lever")
+        return self._check(1 + len(self.pad_angles), "axial, then each pad")
+
+
+class ArticulatedLegs(Legs):
+    """Articulated legs (Sec. V.F): the leg origin (lower inboard parallelogram pivot) at radius and height, S1
+    outward along the azimuth, S3 along the roll axis; the geometry of Fig. 22-25 and the initial psi."""
+
+    kind: Literal["articulated"]
+    geometry: GeometryTable
+    length_scale: Number() = 1.0
+    psi_initial: Angle
+    upper: str
+    lower: str
+
+    @model_validator(mode="after")
+    def _psi(self):
+        if not -np.pi / 2 < self.psi_initial < np.pi / 2:
+            raise refuse("an angle between -90 and 90 deg", f"{np.degrees(self.psi_initial):.4g} deg", "psi_initial")
+        return self._check(2, "upper, lower")
+
+
+class TerrainStep(Table):
+    x: LengthSigned
+    y: LengthSigned
+    direction: Angle
+    height: LengthSigned
+    note: str = ""
+
+
+class HemisphereRock(Table):
+    shape: Literal["hemisphere"]
+    x: LengthSigned
+    y: LengthSigned
+    radius: Length
+    note: str = ""
+
+
+class BoxRock(Table):
+    shape: Literal["box"]
+    x: LengthSigned
+    y: LengthSigned
+    length: Length
+    width: Length
+    height: Length
+    yaw: Angle = 0.0
+    note: str = ""
+
+
+class HeightFieldTable(Table):
+    file: str
+    spacing: Quantities("length", "positive", count=2)
+    origin: Quantities("length", count=2) = (0.0, 0.0)
+    note: str = ""
+
+
+class TerrainTable(Table):
+    slope: Angle = 0.0
+    mu_static: Number("any") = 1.5e6
+    mu_dynamic: Number("any") = 1.0e6
+    steps: list[TerrainStep] = []
+    rocks: list[Tagged("shape", None, HemisphereRock, BoxRock)] = []
+    height_field: HeightFieldTable | None = None
+    soil: str | None = None
+    note: str = ""
+
+    @model_validator(mode="after")
+    def _friction(self):
+        if self.mu_dynamic < 0:
+            raise refuse("a friction coefficient >= 0 (0: frictionless)", f"{self.mu_dynamic}", "mu_dynamic")
+        if self.mu_dynamic > self.mu_static:
+            raise refuse(f"a dynamic coefficient <= the static one ({self.mu_static})", f"{self.mu_dynamic}",
+                         "mu_dynamic")
+        if not -np.pi / 2 < self.slope < np.pi / 2:
+            raise refuse("a slope between -90 and 90 deg", f"{np.degrees(self.slope):.4g} deg", "slope")
+        return self
+
+
+class Initial(Table):
+    velocity: Quantities("velocity", count=3)
+    heading: Angle | None = None
+    roll: Angle = 0.0
+    yaw: Angle | None = None
+    pitch: Angle | None = None
+    inclination: Angle | None = None
+    inclination_azimuth: Angle | None = None
+    rates: Quantities("angular_velocity", count=3) = (0.0, 0.0, 0.0)
+    note: str = ""
+
+    @field_validator("velocity", mode="wrap")
+    @classmethod
+    def _upward(cls, value: Any, handler, info: ValidationInfo):
+        si = handler(value)
+        if si[2] > 0:                                   # legal (a rebound, a hop), but more likely a sign slip
+            warn_input(info.context["file"], "initial.velocity[2]", f"an upward initial velocity, V3 = {value[2]} "
+                       "(kappa-3 is up, a descent is negative): the capsule rises before it lands; simulated as given")
+        return si
+
+    @model_validator(mode="after")
+    def _attitude(self):
+        if self.inclination is not None and (self.yaw is not None or self.pitch is not None):
+            raise refuse("either inclination or yaw/pitch", "both", "inclination")
+        return self
+
+
+def _energy_from(value: Any) -> float | None:
+    if value is False:
+        return None
+    return quantity(value, "time", "any")
+
+
+_D = Controls()
+
+
+class ControlsTable(Table):
+    t_final: Time = _D.t_final
+    rtol: Number() = _D.rtol
+    atol: Number() = _D.atol
+    fixed_step: Time | None = None
+    max_step: Time = _D.max_step
+    event_tol: Time = _D.event_tol
+    tip_angle: Quantity("angle") = _D.tip_angle
+    taus: Number("any") = 0.0
+    stop_on_bottoming: bool = True
+    energy_criterion_from: Annotated[float | None, PlainValidator(_energy_from)] = 0.05
+    closed_form_flight: bool = True
+    note: str = ""
+
+    @model_validator(mode="after")
+    def _ranges(self):
+        if not 0 < self.tip_angle <= np.pi:
+            raise refuse("an angle in (0, 180] deg", f"{np.degrees(self.tip_angle):.4g} deg", "tip_angle")
+        if self.taus < 0:
+            raise refuse("a number of periods >= 0", f"{self.taus}", "taus")
+        if self.rtol >= 1:
+            raise refuse("a relative tolerance below 1", f"{self.rtol}", "rtol")
+        if self.event_tol > _D.contact_band / GRAZE_SPEED:
+            raise refuse(f"a time of at most {_D.contact_band / GRAZE_SPEED:g} s (the grazing band "
+                         f"{_D.contact_band:g} m at {GRAZE_SPEED:g} m/s)", f"{self.event_tol:g} s", "event_tol")
+        return self
+
+
+class OutputTable(Table):
+    interval: Time | None = None
+    srs_damping: Number() = 0.05
+
+    @model_validator(mode="after")
+    def _damping(self):
+        if not 0 < self.srs_damping < 1:
+            raise refuse("a damping ratio in (0, 1)", f"{self.srs_damping}", "srs_damping")
+        return self
+
+
+class SceneFile(Table):
+    """A scene file (docs/reference/scene.md): one landing."""
+
+    scene: SceneHead = SceneHead()
+    capsule: Capsule
+    cells: dict[str, Cell]
+    legs: Tagged("kind", "telescoping", TelescopingLegs, ArticulatedLegs)
+    terrain: TerrainTable = TerrainTable()
+    initial: Initial
+    controls: ControlsTable = ControlsTable()
+    output: OutputTable = OutputTable()
+
+    @model_validator(mode="after")
+    def _references(self):
+        legs = self.legs
+        names = ("upper", "lower") if isinstance(legs, ArticulatedLegs) else \
+            ("axial", "pads") if legs.pad_angles else ("axial",)
+        for key in names:
+            name = getattr(legs, key)
+            if key == "pads" and not name:
+                raise refuse("this key to be present", "nothing", "legs.pads")
+            if name not in self.cells:
+                raise refuse("the name of a [cells.NAME] table (" + ", ".join(sorted(self.cells)) + ")",
+                             repr(name), "legs." + key)
+        if self.terrain.soil is not None:
+            if not legs.footpad_mass > 0:
+                raise refuse("footpads with mass to sink into it ([legs] footpad_mass > 0)", "massless footpads",
+                             "terrain.soil")
+            if not legs.footpad_diameter > 0:
+                raise refuse("the footpads' bearing size ([legs] footpad_diameter)", "none given", "terrain.soil")
+        return self
 
 
 MAX_BASES = 8
@@ -263,226 +415,140 @@ def _merge(base: dict, over: dict) -> dict:
 LANDER_ONLY = ("lander", "structure", "members", "item", "requirements", "report", "synthesis")
 
 
-def _upper(value):
-    """The larger end of a requirement written as a value or a [low, high] range (as written)."""
-    return value[-1] if isinstance(value, list) and value else value
+
+def lander_scene(path: Path, data: dict, velocity: tuple[float, float, float] | None) -> SceneDocument:
+    """A lander file's nominal landing: its scene tables, [lander] name, title and gravity as its [scene], and,
+    without an [initial] table, `velocity` (m/s, kappa: the envelope's largest speeds)."""
+    head = data["lander"] if isinstance(data.get("lander"), dict) else {}
+    scene = {k: v for k, v in data.items() if k not in LANDER_ONLY}
+    scene["scene"] = {k: head[k] for k in ("name", "title", "gravity") if k in head}
+    if "initial" not in scene and velocity is not None:
+        scene["initial"] = {"velocity": [f"{v!r} m/s" for v in velocity]}
+    return SceneDocument(path, scene)
 
 
-def lander_scene(root: Node) -> Node:
-    """A lander file read as its nominal landing: the scene tables, [lander] name, title and gravity as its
-    [scene], and, without an [initial] table, the envelope's largest vertical and horizontal speeds."""
-    head = root.data["lander"] if isinstance(root.data["lander"], dict) else {}
-    data = {k: v for k, v in root.data.items() if k not in LANDER_ONLY}
-    data["scene"] = {k: head[k] for k in ("name", "title", "gravity") if k in head}
-    req = root.data.get("requirements")
-    env = req.get("envelope") if isinstance(req, dict) else None
-    if "initial" not in data and isinstance(env, dict) and isinstance(_upper(env.get("vertical_speed")), str):
-        h = _upper(env.get("horizontal_speed", "0 m/s"))
-        data["initial"] = {"velocity": ["0 m/s", h, "-" + _upper(env["vertical_speed"]).strip()]}
-    return Node(root.file, "", data)
-
-
-def load_scene_toml(path: Path, depth: int = 0) -> Node:
-    """The scene TOML with its `scene.base` chain (a scene it varies, path relative to it) merged under it;
-    a lander file gives its nominal landing (`lander_scene`)."""
+def scene_document(path: Path, depth: int = 0) -> SceneDocument:
+    """The scene TOML with its `scene.base` chain (a scene it varies, path relative to it) merged under it; a
+    lander file gives its nominal landing (alightsize.pipeline.lander.read_lander)."""
     root = load_toml(path)
     if "lander" in root.data:
-        return lander_scene(root)
+        env = root.table("requirements").table("envelope")
+        return lander_scene(path, root.data, validate(Envelope, env.data, env.file, env.path).nominal_velocity())
     head = root.data.get("scene")
     if not (isinstance(head, dict) and "base" in head):
-        return root
+        return SceneDocument(path, root.data)
     base = head["base"]
     base_path = path.parent / base if isinstance(base, str) else None
     if base_path is None or not is_file(base_path):
         raise root.error("scene.base", "the path of a scene TOML (relative to this one)", repr(base))
     if depth >= MAX_BASES:
         raise root.error("scene.base", f"at most {MAX_BASES} nested bases", "a longer chain (a cycle?)")
-    base_data = load_scene_toml(base_path, depth + 1).data
+    base_data = scene_document(base_path, depth + 1).data
     data = _merge(base_data, root.data)
     inherited = {k: v for k, v in (base_data.get("scene") or {}).items() if k == "gravity"}
     data["scene"] = inherited | {k: v for k, v in head.items() if k != "base"}   # name and title are not inherited
-    return Node(path, "", data)
+    return SceneDocument(path, data)
 
 
-def read_scene(path: str | Path, overrides: dict[str, object] | None = None) -> SceneConfig:
-    """Read and validate a scene config, with `overrides` (dotted key path -> TOML value, e.g.
-    {"terrain.slope": "-20 deg"}) applied first; problems are InputErrors naming file and key path. A scene
-    may vary another (`[scene] base = "other.toml"`): its tables are merged key by key over the base's."""
-    path = Path(path)
-    root = load_scene_toml(path)
-    for key, value in (overrides or {}).items():
-        root.set_path(key, value)
-    root.allow(("scene", "capsule", "cells", "legs", "terrain", "initial", "controls", "output"))
-    head = root.table("scene", optional=True)
-    name = head.string("name", path.stem) if head else path.stem
-    title = head.string("title", name) if head else name
-    g = read_gravity(head, "gravity") if head else G0
-    if head:
-        head.finish()
+def read_scene(source: str | Path | SceneDocument, overrides: dict[str, object] | None = None) -> SceneConfig:
+    """Read and validate a scene config (a file, or a scene already read), with `overrides` (dotted key path ->
+    TOML value, e.g. {"terrain.slope": "-20 deg"}) applied first; problems are InputErrors naming file and key
+    path. A scene may vary another (`[scene] base = "other.toml"`): its tables are merged key by key over the
+    base's."""
+    doc = source if isinstance(source, SceneDocument) else scene_document(Path(source))
+    data = doc.data
+    if overrides:
+        data = copy.deepcopy(data)
+        root = Node(doc.path, "", data)
+        for key, value in overrides.items():
+            root.set_path(key, value)
+    return build_scene(doc.path, validate(SceneFile, data, str(doc.path)))
 
-    cap = root.table("capsule")
-    cap.allow(("weight", "mass", "inertia", "cg", "bottom", "note"))
-    if cap.has("weight") == cap.has("mass"):
-        raise cap.error("weight", "exactly one of weight (force) or mass", "both" if cap.has("mass") else "neither")
-    mass = cap.quantity("weight", "force") / G0 if cap.has("weight") else cap.quantity("mass", "mass")
-    inertia_raw = cap.raw("inertia")
-    if isinstance(inertia_raw, list) and len(inertia_raw) == 3 and not any(isinstance(r, list) for r in inertia_raw):
-        tensor = np.diag([cap.parse_quantity(f"inertia[{i}]", v, "inertia") for i, v in enumerate(inertia_raw)])
-    elif isinstance(inertia_raw, list) and len(inertia_raw) == 3 and all(isinstance(r, list) and len(r) == 3
-                                                                          for r in inertia_raw):
-        tensor = np.array([[cap.parse_quantity(f"inertia[{i}][{j}]", v, "inertia", positive=(i == j))
-                            for j, v in enumerate(row)] for i, row in enumerate(inertia_raw)])
-        if not np.allclose(tensor, tensor.T, rtol=1e-9, atol=0):
-            raise cap.error("inertia", "a symmetric tensor", "I_ij != I_ji")
-    else:
-        raise cap.error("inertia", "three principal moments or a 3x3 tensor about the CG (geometric axes)",
-                        repr(inertia_raw))
-    moments, to_geo = principal_axes(tensor)
+
+def build_scene(path: Path, f: SceneFile) -> SceneConfig:
+    """The landing a validated scene file describes, in SI: principal axes, the legs placed and turned into
+    them, the terrain and the initial state in the frames of Sec. V.B."""
+    file = str(path)
+    cap = f.capsule
+    mass = cap.weight / G0 if cap.weight is not None else cap.mass
+    moments, to_geo = principal_axes(cap.inertia)
     if not np.all(moments > 0):
-        raise cap.error("inertia", "a positive definite tensor", f"principal moments {moments}")
-    cg = _vector(cap, "cg", "length") if cap.has("cg") else np.zeros(3)
-    bottom = cap.quantity("bottom", "length") if cap.has("bottom") else None
-    cap.string("note", "")
-    cap.finish()
+        raise InputError(file, "capsule.inertia", "a positive definite tensor", f"principal moments {moments}")
+    cg = np.array(cap.cg)
+    legs, names = _legs(f.legs, f.cells, to_geo, cg)
+    ter = f.terrain
+    features = Terrain(
+        tuple(Step(s.x, s.y, float(np.degrees(s.direction)), s.height) for s in ter.steps),
+        tuple(Hemisphere(r.x, r.y, r.radius) for r in ter.rocks if isinstance(r, HemisphereRock)),
+        tuple(Box(r.x, r.y, r.length, r.width, r.height, float(np.degrees(r.yaw))) for r in ter.rocks
+              if isinstance(r, BoxRock)),
+        _height_field(ter.height_field, path))
+    soil = None if ter.soil is None else find_soil(ter.soil, path.parent, file, "terrain.soil")
+    lepk = rot(0, ter.slope)            # kappa -> epsilon (eq. 1, LEPK): gravity (0, g sin, -g cos) (eq. 4-5)
 
-    cells_node = root.table("cells")
-    cell_nodes = {k: cells_node.table(k) for k in cells_node.data}
-    cells_node.finish()
-    leg_specs = _legs(root.table("legs"), cell_nodes)
-    models = {k: _cell(n) for k, n in cell_nodes.items()}
-    legs: list[TelescopingLeg | ArticulatedLeg] = []
-    names: list[tuple[str, ...]] = []
-    for spec in leg_specs:
-        f = spec["factors"]
-        if spec["kind"] == "articulated":
-            up, lo = models[spec["upper"]], models[spec["lower"]]
-            legs.append(ArticulatedLeg(to_geo.T @ (spec["attach"] - cg), to_geo.T @ rot(2, spec["azimuth"]),
-                                       spec["geometry"], spec["psi0"],
-                                       CellModel(up.curve, up.k, up.c, f[0], up.yield_force),
-                                       CellModel(lo.curve, lo.k, lo.c, f[1], lo.yield_force)))
-            names.append(("upper", "lower"))
-            continue
-        ax = models[spec["axial"]]
-        axial = CellModel(ax.curve, ax.k, ax.c, f[0], ax.yield_force)
-        pads = []
-        for j in range(len(spec["angles"])):
-            pm = models[spec["pads"]]
-            pads.append(CellModel(pm.curve, pm.k, pm.c, f[1 + j], pm.yield_force))
-        legs.append(TelescopingLeg(to_geo.T @ (spec["attach"] - cg), to_geo.T.copy(), spec["rho"], spec["lever"],
-                                   spec["angles"], axial, tuple(pads), spec["small"]))
-        names.append(("axial", *[f"rot{j + 1}" for j in range(len(spec["angles"]))]))
-
-    ter = root.table("terrain", optional=True)
-    slope = mu_s = mu_d = soil = None
-    features = Terrain()
-    if ter:
-        ter.allow(("slope", "mu_static", "mu_dynamic", "steps", "rocks", "height_field", "soil", "note"))
-        features = _features(ter, path)
-        if ter.has("soil"):
-            soil = find_soil(ter, "soil", path.parent)
-            if not leg_specs[0]["footpad_mass"] > 0:
-                raise ter.error("soil", "footpads with mass to sink into it ([legs] footpad_mass > 0)",
-                                "massless footpads")
-            if not leg_specs[0]["footpad_diameter"] > 0:
-                raise ter.error("soil", "the footpads' bearing size ([legs] footpad_diameter)", "none given")
-        slope = ter.quantity("slope", "angle", 0.0, positive=False) if ter.has("slope") else 0.0
-        mu_s = ter.number("mu_static", 1.5e6, positive=False)
-        mu_d = ter.number("mu_dynamic", 1.0e6, positive=False)
-        if mu_d < 0:
-            raise ter.error("mu_dynamic", "a friction coefficient >= 0 (0: frictionless)", f"{mu_d}")
-        ter.string("note", "")
-        ter.finish()
-        if mu_d > mu_s:
-            raise ter.error("mu_dynamic", f"a dynamic coefficient <= the static one ({mu_s})", f"{mu_d}")
-        if not -np.pi / 2 < slope < np.pi / 2:
-            raise ter.error("slope", "a slope between -90 and 90 deg", f"{np.degrees(slope):.4g} deg")
-    slope = slope or 0.0
-    lepk = rot(0, slope)            # kappa -> epsilon (eq. 1, LEPK): gravity (0, g sin, -g cos) (eq. 4-5)
-
-    ini = root.table("initial")
-    ini.allow(("velocity", "heading", "roll", "yaw", "pitch", "inclination", "inclination_azimuth", "rates", "note"))
-    vel = _vector(ini, "velocity", "velocity")
-    if ini.has("heading"):                              # the horizontal velocity turned from kappa-2 toward kappa-1
-        h, v_h = ini.quantity("heading", "angle", positive=False), float(np.hypot(vel[0], vel[1]))
-        vel = np.array([v_h * np.sin(h), v_h * np.cos(h), vel[2]])
-    if vel[2] > 0:                                      # legal (a rebound, a hop), but more likely a sign slip
-        ini.warn("velocity[2]", f"an upward initial velocity, V3 = {ini.raw('velocity')[2]} (kappa-3 is up, a "
-                                "descent is negative): the capsule rises before it lands; simulated as given")
-    roll = ini.quantity("roll", "angle", 0.0, positive=False) if ini.has("roll") else 0.0
-    if ini.has("inclination"):
-        if ini.has("yaw") or ini.has("pitch"):
-            raise ini.error("inclination", "either inclination or yaw/pitch", "both")
-        theta = ini.quantity("inclination", "angle", positive=False)
+    ini = f.initial
+    vel = np.array(ini.velocity)
+    if ini.heading is not None:                         # the horizontal velocity turned from kappa-2 toward kappa-1
+        v_h = float(np.hypot(vel[0], vel[1]))
+        vel = np.array([v_h * np.sin(ini.heading), v_h * np.cos(ini.heading), vel[2]])
+    if ini.inclination is not None:
         default_az = float(np.arctan2(vel[1], vel[0])) if np.hypot(vel[0], vel[1]) > 0 else 0.0
-        az = (ini.quantity("inclination_azimuth", "angle", positive=False) if ini.has("inclination_azimuth")
-              else default_az)
-        yaw, pitch = _inclination_attitude(roll, theta, az)
+        az = ini.inclination_azimuth if ini.inclination_azimuth is not None else default_az
+        yaw, pitch = _inclination_attitude(ini.roll, ini.inclination, az)
     else:
-        yaw = ini.quantity("yaw", "angle", 0.0, positive=False) if ini.has("yaw") else 0.0
-        pitch = ini.quantity("pitch", "angle", 0.0, positive=False) if ini.has("pitch") else 0.0
-    rates = _vector(ini, "rates", "angular_velocity") if ini.has("rates") else np.zeros(3)
-    ini.string("note", "")
-    ini.finish()
-    lkx = rot(2, roll) @ rot(1, yaw) @ rot(0, pitch)    # chi -> kappa (eq. 2, FUNEV LKX)
+        yaw, pitch = ini.yaw or 0.0, ini.pitch or 0.0
+    lkx = rot(2, ini.roll) @ rot(1, yaw) @ rot(0, pitch)    # chi -> kappa (eq. 2, FUNEV LKX)
     q0 = matrix_quat(lepk @ lkx @ to_geo)
 
-    ctl_node = root.table("controls", optional=True)
-    c = _controls(ctl_node, mass, legs)
-    out = root.table("output", optional=True)
-    interval, srs_damping = None, 0.05
-    if out:
-        out.allow(("interval", "srs_damping"))
-        interval = out.quantity("interval", "time") if out.has("interval") else None
-        srs_damping = out.number("srs_damping", 0.05)
-        out.finish()
-        if not 0 < srs_damping < 1:
-            raise out.error("srs_damping", "a damping ratio in (0, 1)", f"{srs_damping}")
-    root.finish()
-
-    body = np.zeros((0, 3)) if bottom is None else (to_geo.T @ (np.array([0.0, 0.0, -bottom]) - cg))[None, :]
-    scene = Scene(mass, moments, tuple(legs), lepk @ np.array([0.0, 0.0, -g]), lepk @ vel, q0, to_geo.T @ rates,
-                  mu_s if mu_s is not None else 1.5e6, mu_d if mu_d is not None else 1.0e6,
-                  to_geo.T @ np.array([0.0, 0, 1]),
-                  body, leg_specs[0]["footpad_mass"], terrain=features, soil=soil,
-                  footpad_band=leg_specs[0]["footpad_band"], footpad_diameter=leg_specs[0]["footpad_diameter"])
-    return SceneConfig(path, name, title, scene, c, to_geo, lepk, interval, srs_damping, tuple(names))
-
-
-def _controls(node: Node | None, mass: float, legs: list[TelescopingLeg | ArticulatedLeg]) -> Controls:
-    if node is None:
-        return Controls()
-    node.allow(("t_final", "rtol", "atol", "fixed_step", "max_step", "event_tol", "tip_angle", "taus",
-                "stop_on_bottoming", "energy_criterion_from", "closed_form_flight", "note"))
-    d = Controls()
-    t_final = node.quantity("t_final", "time", d.t_final)
-    rtol = node.number("rtol", d.rtol)
-    atol = node.number("atol", d.atol)
-    fixed = node.quantity("fixed_step", "time") if node.has("fixed_step") else None
-    max_step = node.quantity("max_step", "time", d.max_step)
-    event_tol = node.quantity("event_tol", "time", d.event_tol)
-    tip = node.quantity("tip_angle", "angle", d.tip_angle)
-    taus = node.number("taus", 0.0, positive=False)
-    stop = node.boolean("stop_on_bottoming", True)
-    energy_from = node.raw("energy_criterion_from", "0.05 s")
-    energy_t = None if energy_from is False else node.parse_quantity("energy_criterion_from", energy_from, "time",
-                                                                       positive=False)
-    flight = node.boolean("closed_form_flight", True)
-    node.string("note", "")
-    node.finish()
-    if not 0 < tip <= np.pi:
-        raise node.error("tip_angle", "an angle in (0, 180] deg", f"{np.degrees(tip):.4g} deg")
-    if taus < 0:
-        raise node.error("taus", "a number of periods >= 0", f"{taus}")
-    if rtol >= 1:
-        raise node.error("rtol", "a relative tolerance below 1", f"{rtol}")
-    if event_tol > d.contact_band / GRAZE_SPEED:
-        raise node.error("event_tol", f"a time of at most {d.contact_band / GRAZE_SPEED:g} s (the grazing band "
-                         f"{d.contact_band:g} m at {GRAZE_SPEED:g} m/s)", f"{event_tol:g} s")
+    c = f.controls
     period = float(np.pi * np.sqrt(mass / legs[0].cells[0].k))    # TAU = pi sqrt(M / SLOPE(1)) (App. VII,
                                                                   # telescoping subroutine FORCE)
-    return Controls(t_final=t_final, rtol=rtol, atol=atol, fixed_step=fixed, max_step=max_step, event_tol=event_tol,
-                    tip_angle=tip, taus=taus, period=period, stop_on_bottoming=stop, energy_check_from=energy_t,
-                    closed_form_flight=flight)
+    controls = Controls(t_final=c.t_final, rtol=c.rtol, atol=c.atol, fixed_step=c.fixed_step, max_step=c.max_step,
+                        event_tol=c.event_tol, tip_angle=c.tip_angle, taus=c.taus, period=period,
+                        stop_on_bottoming=c.stop_on_bottoming, energy_check_from=c.energy_criterion_from,
+                        closed_form_flight=c.closed_form_flight)
+    g = f.scene.gravity
+    body = np.zeros((0, 3)) if cap.bottom is None else (to_geo.T @ (np.array([0.0, 0.0, -cap.bottom]) - cg))[None, :]
+    lg = f.legs
+    scene = Scene(mass, moments, tuple(legs), lepk @ np.array([0.0, 0.0, -g]), lepk @ vel, q0,
+                  to_geo.T @ np.array(ini.rates), ter.mu_static, ter.mu_dynamic, to_geo.T @ np.array([0.0, 0, 1]),
+                  body, lg.footpad_mass, terrain=features, soil=soil, footpad_band=lg.footpad_band,
+                  footpad_diameter=lg.footpad_diameter)
+    name = f.scene.name if f.scene.name is not None else path.stem
+    title = f.scene.title if f.scene.title is not None else name
+    return SceneConfig(path, name, title, scene, controls, to_geo, lepk, f.output.interval, f.output.srs_damping,
+                       tuple(names))
+
+
+def _legs(legs: TelescopingLegs | ArticulatedLegs, cells: dict[str, Cell], to_geo: np.ndarray,
+          cg: np.ndarray) -> tuple[list[TelescopingLeg | ArticulatedLeg], list[tuple[str, ...]]]:
+    """The simulator's legs (in principal axes, from the CG) and the names of each leg's cells."""
+    out: list[TelescopingLeg | ArticulatedLeg] = []
+    names: list[tuple[str, ...]] = []
+    if isinstance(legs, ArticulatedLegs):
+        geometry = legs.geometry.geometry(legs.length_scale)       # test-model scaling (Table 27)
+        for (az, attach), f in zip(legs.attachments(), legs.factors(2)):
+            out.append(ArticulatedLeg(to_geo.T @ (attach - cg), to_geo.T @ rot(2, az), geometry, legs.psi_initial,
+                                      cells[legs.upper].model(f[0]), cells[legs.lower].model(f[1])))
+            names.append(("upper", "lower"))
+        return out, names
+    n_pads = len(legs.pad_angles)
+    for (_, attach), f in zip(legs.attachments(), legs.factors(1 + n_pads)):
+        pads = tuple(cells[legs.pads].model(f[1 + j]) for j in range(n_pads))
+        out.append(TelescopingLeg(to_geo.T @ (attach - cg), to_geo.T.copy(), legs.length, legs.pad_lever,
+                                  legs.pad_angles, cells[legs.axial].model(f[0]), pads, legs.small_angle))
+        names.append(("axial", *[f"rot{j + 1}" for j in range(n_pads)]))
+    return out, names
+
+
+def _height_field(table: HeightFieldTable | None, path: Path) -> HeightField | None:
+    if table is None:
+        return None
+    try:
+        return HeightField.from_file(path.parent / table.file, *table.spacing, *table.origin)
+    except (OSError, ValueError) as exc:
+        raise InputError(str(path), "terrain.height_field.file",
+                         "a .npy or .csv grid of finite heights (m), at least 2 x 2", str(exc)) from None
 
 
 def impact_conditions(cfg: SceneConfig) -> dict:

@@ -5,10 +5,15 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
+from typing import Annotated, Any
 
 from alightsize_sim.soil import Soil
 
-from alightsize.common.config import Node, is_file, load_toml
+from pydantic import PlainValidator, model_validator
+
+from alightsize.common.config import is_file, load_toml
+from alightsize.common.typed import Number, Quantity, Table, refuse, validate
+from alightsize.common.errors import InputError
 from alightsize.common.resources import data_dir
 
 _UNITS = {"k_c": "N/m^(n+1)", "k_phi": "N/m^(n+2)", "c": "Pa", "gamma": "N/m^3"}   # SI base unit of each key
@@ -18,44 +23,54 @@ VALUE_RANGE = (1e-6, 1e12)   # k_c, k_phi, c, gamma in SI, or 0: every soil's (g
 PHI_MAX_DEG = 60.0       # friction angle: soils lie below about 50 deg; tan^2(45 + phi/2) grows without bound
 
 
-def _quantity(node: Node, key: str) -> float:
+def _soil_value(value: Any, key: str) -> float:
     """A value as the file states it, "NUMBER UNIT" with the key's SI unit, optionally prefixed k or M (the
     unit of k_c and k_phi depends on n, so it is spelled with n)."""
-    text = node.raw(key)
     low, high = VALUE_RANGE
     expected = f'a value like "1.4 k{_UNITS[key]}" (prefix k or M allowed), 0 or {low:g} to {high:g} {_UNITS[key]}'
     try:
-        number, unit = str(text).split(maxsplit=1)
-        value = float(number)
+        number, unit = str(value).split(maxsplit=1)
+        si = float(number)
     except ValueError:
-        raise node.error(key, expected, repr(text)) from None
-    prefix = unit[: len(unit) - len(_UNITS[key])]
-    si = value * _PREFIX.get(prefix, math.nan)
+        raise refuse(expected, repr(value)) from None
+    si *= _PREFIX.get(unit[: len(unit) - len(_UNITS[key])], math.nan)
     if not unit.endswith(_UNITS[key]) or not (si == 0 or low <= si <= high):      # NaN fails too
-        raise node.error(key, expected, repr(text))
+        raise refuse(expected, repr(value))
     return si
+
+
+def SoilValue(key: str):  # noqa: N802 - a type
+    return Annotated[float, PlainValidator(lambda v: _soil_value(v, key))]
+
+
+class SoilFile(Table):
+    """A soil file (docs/soil.md): Bekker's n, k_c, k_phi and the Mohr-Coulomb c, phi, with the unit weight."""
+
+    name: str
+    n: Number("any")
+    k_c: SoilValue("k_c")
+    k_phi: SoilValue("k_phi")
+    c: SoilValue("c")
+    phi: Quantity("angle", "any")
+    gamma: SoilValue("gamma")
+    source: dict[str, str] = {}
+
+    @model_validator(mode="after")
+    def _ranges(self):
+        if not 0 <= self.n <= N_MAX:
+            raise refuse(f"a sinkage exponent from 0 to {N_MAX:g} (Bekker fits: 0 to about 1.6)", repr(self.n), "n")
+        if self.k_c + self.k_phi <= 0:
+            raise refuse("k_c + k_phi above zero (a soil that bears a load)", "both zero", "k_phi")
+        if not 0 <= self.phi <= math.radians(PHI_MAX_DEG):
+            raise refuse(f"a friction angle from 0 to {PHI_MAX_DEG:g} deg", f"{math.degrees(self.phi):.4g} deg",
+                         "phi")
+        return self
 
 
 def read_soil(path: str | Path) -> Soil:
     """One soil file: name, n, k_c, k_phi, c, phi, gamma with their units, and a [source] table."""
-    node = load_toml(path)
-    node.allow(("name", "n", "k_c", "k_phi", "c", "phi", "gamma", "source"))
-    name = node.string("name")
-    n = node.number("n", positive=False)
-    if not 0 <= n <= N_MAX:
-        raise node.error("n", f"a sinkage exponent from 0 to {N_MAX:g} (Bekker fits: 0 to about 1.6)", repr(n))
-    values = {k: _quantity(node, k) for k in ("k_c", "k_phi", "c", "gamma")}
-    if values["k_c"] + values["k_phi"] <= 0:
-        raise node.error("k_phi", "k_c + k_phi above zero (a soil that bears a load)", "both zero")
-    phi = node.quantity("phi", "angle", positive=False)
-    if not 0 <= phi <= math.radians(PHI_MAX_DEG):
-        raise node.error("phi", f"a friction angle from 0 to {PHI_MAX_DEG:g} deg", repr(node.raw("phi")))
-    src = node.table("source", optional=True)
-    source = {k: src.string(k) for k in list(src.data)} if src else {}
-    if src:
-        src.finish()
-    node.finish()
-    return Soil(n, values["k_c"], values["k_phi"], values["c"], phi, values["gamma"], name, source)
+    f = validate(SoilFile, load_toml(path).data, str(path))
+    return Soil(f.n, f.k_c, f.k_phi, f.c, f.phi, f.gamma, f.name, f.source)
 
 
 def soil_presets() -> dict[str, Soil]:
@@ -63,13 +78,13 @@ def soil_presets() -> dict[str, Soil]:
     return {p.stem: read_soil(p) for p in sorted((data_dir("materials") / "soils").glob("*.toml"))}
 
 
-def find_soil(node: Node, key: str, base: Path) -> Soil:
+def find_soil(name: str, base: Path, file: str, key: str) -> Soil:
     """The soil a scene names at `key`: a preset's name or a soil file's path (relative to `base`)."""
-    name = node.string(key)
     presets = soil_presets()
     if name in presets:
         return presets[name]
     path = base / name
     if not is_file(path):
-        raise node.error(key, "a shipped soil (" + ", ".join(sorted(presets)) + ") or a soil file's path", repr(name))
+        raise InputError(file, key, "a shipped soil (" + ", ".join(sorted(presets)) + ") or a soil file's path",
+                         repr(name))
     return read_soil(path)

@@ -6,14 +6,17 @@ from __future__ import annotations
 import copy
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Literal
 
 from alightsize.common.config import Node, is_file, load_toml
+from alightsize.common.errors import InputError
+from alightsize.common.typed import Integer, Quantity, Table, validate
 from alightsize.checks.rules import DEFAULT_RULES, RULES
 from alightsize.loads.config import LoadsConfig, read_loads
 from alightsize.loads.quasi_static import LoadReference, LoadsResult, attach, run_loads, validate_references
 from alightsize.model.materials import Material, library, material_paths
-from alightsize.pipeline.items import Item, read_item, read_required
-from alightsize.pipeline.landings import Landings, LandingSpec, landed, read_landing_spec, run_landings
+from alightsize.pipeline.items import Item, RequiredFactor, read_item
+from alightsize.pipeline.landings import Landings, LandingSpec, LandingsTable, landed, landing_spec, run_landings
 
 UNIT_SYSTEMS = ("US", "SI")
 
@@ -70,50 +73,62 @@ def read_items(nodes: tuple[Node, ...], mats: dict[str, Material], required: flo
     return items
 
 
-def read_design(path: str | Path) -> DesignSpec:
-    """Read and validate a design config; any problem is an InputError naming file and key path. Nothing is
-    computed: the envelopes and landing cases it names run in `prepare`."""
+class DesignHead(Table):
+    configuration: str
+    title: str | None = None
+    capsule_mass: Quantity("mass") | None = None
+    legs: Integer(1) = 4
+    rules: Literal[tuple(RULES)] = DEFAULT_RULES
+    materials: list[str] = []
+
+
+class DesignReport(Table):
+    units: Literal[UNIT_SYSTEMS] = "US"
+
+
+class Audit(RequiredFactor):
+    decimals: Integer(0, 12) | None = None
+
+
+class LoadsFileRef(Table):
+    file: str
+
+
+class DesignFile(Table):
+    """A design config's tables (docs/reference/design.md); its [[item]] tables are read by read_items."""
+
+    design: DesignHead
+    report: DesignReport = DesignReport()
+    audit: Audit = Audit()
+    loads: LoadsFileRef | None = None
+    landings: LandingsTable | None = None
+    item: list
+
+
+def read_design(path: str | Path, root: Node | None = None) -> DesignSpec:
+    """Read and validate a design config (or its TOML `root`, already loaded); any problem is an InputError naming
+    file and key path. Nothing is computed: the envelopes and landing cases it names run in `prepare`."""
     path = Path(path)
-    root = load_toml(path)
-    d = root.table("design")
-    configuration = d.string("configuration")
-    title = d.string("title", configuration)
-    capsule = d.quantity("capsule_mass", "mass", default=None)
-    legs = d.integer("legs", 4)
-    rules = d.string("rules", DEFAULT_RULES, choices=tuple(RULES))
-    extra = material_paths(d, "materials", path.parent)
-    d.finish()
-    rep = root.table("report", optional=True)
-    units = rep.string("units", "US", choices=UNIT_SYSTEMS) if rep else "US"
-    if rep:
-        rep.finish()
-    aud = root.table("audit", optional=True)
-    required = read_required(aud, 1.2) if aud else 1.2
-    decimals = aud.integer("decimals", None, minimum=0, maximum=12) if aud else None
-    if aud:
-        aud.finish()
-    mats = library(extra)
-    loads = _loads_config(root, path)
+    root = load_toml(path) if root is None else root
+    f = validate(DesignFile, root.data, str(path))
+    d, aud = f.design, f.audit
+    required = 1.2 if aud.required_design_factor is None else aud.required_design_factor
+    mats = library(material_paths(d.materials, path.parent, str(path), "design.materials"))
+    loads = None
+    if f.loads is not None:
+        file = path.parent / f.loads.file
+        if not is_file(file):
+            raise InputError(str(path), "loads.file", "the path of an existing loads config", str(file))
+        loads = read_loads(file)
     validate_references(root, loads)
-    land_node = root.table("landings", optional=True)
-    landings = read_landing_spec(land_node, path, loads) if land_node is not None else None
+    landings = landing_spec(f.landings, path, loads) if f.landings is not None else None
+    for t in ("design", "report", "audit", "loads", "landings"):
+        root.raw(t, None)                          # read above
     nodes = tuple(root.tables("item", label="name"))
-    read_items(nodes, mats, required, root, rules)
+    read_items(nodes, mats, required, root, d.rules)
     root.finish()
-    return DesignSpec(path, configuration, title, capsule, legs, units, required, decimals, mats, nodes, loads,
-                      landings, rules=rules)
-
-
-def _loads_config(root: Node, path: Path) -> LoadsConfig | None:
-    """[loads] file = "...": the loads config whose envelopes the checks reference (App. III -> App. IV)."""
-    node = root.table("loads", optional=True)
-    if node is None:
-        return None
-    file = path.parent / node.string("file")
-    node.finish()
-    if not is_file(file):
-        raise node.error("file", "the path of an existing loads config", str(file))
-    return read_loads(file)
+    return DesignSpec(path, d.configuration, d.title if d.title is not None else d.configuration, d.capsule_mass,
+                      d.legs, f.report.units, required, aud.decimals, mats, nodes, loads, landings, rules=d.rules)
 
 
 def prepare(spec: DesignSpec, landings_dir: Path | None = None, progress: bool = False,

@@ -8,7 +8,10 @@ from math import inf
 from alightsize.common import units
 from alightsize.checks.kinds import Check, Outcome, out_of_range, read_check
 from alightsize.checks.rules import Rules
+from pydantic import model_validator
+
 from alightsize.common.config import Node
+from alightsize.common.typed import Number, Table, refuse, validate
 from alightsize.common.errors import InputError
 from alightsize.loads.quasi_static import Unloaded
 from alightsize.model.materials import Material, lookup, require
@@ -87,20 +90,32 @@ def _read_size(node: Node, section: Section | None, checks: tuple[Check, ...]) -
     return SizeSpec(dim, low, high, gauges)
 
 
+class RequiredFactor(Table):
+    """A table's `required_design_factor`: finite, positive and at least 1, or below 1 only with
+    `allow_below_one = true` beside it (below 1 a member passes at stresses above its allowable, so the override
+    is explicit and the report names it)."""
+
+    required_design_factor: Number() | None = None
+    allow_below_one: bool = False
+
+    @model_validator(mode="after")
+    def _below_one(self):
+        required, allow = self.required_design_factor, self.allow_below_one
+        if required is not None and required < 1 and not allow:
+            raise refuse("a required design factor of at least 1 (below 1 a member passes above its allowable; to "
+                         "mean it, write allow_below_one = true beside it)", f"{required:g}", "required_design_factor")
+        if allow and not (required is not None and required < 1):
+            found = "no required_design_factor here" if required is None else f"required_design_factor {required:g}"
+            raise refuse("allow_below_one = true only beside a required_design_factor below 1", found,
+                         "allow_below_one")
+        return self
+
+
 def read_required(node: Node, default: float) -> float:
-    """A table's `required_design_factor` (`default` when it gives none): finite, positive and at least 1, or
-    below 1 only with `allow_below_one = true` beside it (below 1 a member passes at stresses above its
-    allowable, so the override is explicit and the report names it)."""
-    required = node.number("required_design_factor", default)
-    allow = node.boolean("allow_below_one", False)
-    written = node.has("required_design_factor")
-    if written and required < 1 and not allow:
-        raise node.error("required_design_factor", "a required design factor of at least 1 (below 1 a member passes "
-                         "above its allowable; to mean it, write allow_below_one = true beside it)", f"{required:g}")
-    if allow and not (written and required < 1):
-        raise node.error("allow_below_one", "allow_below_one = true only beside a required_design_factor below 1",
-                         f"required_design_factor {required:g}" if written else "no required_design_factor here")
-    return required
+    """The `required_design_factor` of a Node-read table (`default` when it gives none): RequiredFactor."""
+    data = {k: node.raw(k) for k in RequiredFactor.model_fields if node.has(k)}
+    required = validate(RequiredFactor, data, node.file, node.path).required_design_factor
+    return default if required is None else required
 
 
 def read_item(node: Node, materials: dict[str, Material], required_default: float, rules: Rules) -> Item:

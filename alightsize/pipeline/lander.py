@@ -15,29 +15,38 @@ members' checks, the landing cases of the requirements). Reading it only reads a
 from __future__ import annotations
 
 import itertools
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from functools import partial
-from math import degrees, pi
+from math import degrees, radians
 from pathlib import Path
+from typing import Any, Literal
 
-from alightsize_sim.telescoping_leg import TelescopingLeg as SimTelescopingLeg
+from pydantic import ValidationInfo, model_validator
+
+from alightsize_sim.landing import G0
+from alightsize_sim.crush_curve import CrushCurve
 
 from alightsize.common.config import SEED_MAX, Node, load_toml
-from alightsize.landings.criteria import Criteria, read_criteria
+from alightsize.common.errors import InputError
+from alightsize.common.typed import Integer, Number, Quantity, Table, refuse, validate
+from alightsize.landings.criteria import CriteriaTable
 from alightsize.landings.dispersions import Dispersion
 from alightsize.landings.study import Run, Study, _sampled
-from alightsize.loads.config import NAME, LoadsConfig, read_loads
-from alightsize.loads.envelopes import default_grid
+from alightsize.loads.config import Combined, Configuration, GridTable, LoadsConfig, Name, check_combined
+from alightsize.loads.envelopes import LegCase, default_grid
 from alightsize.loads.histories import dynamic_envelope, telescoping_dynamic_envelope
 from alightsize.loads.quasi_static import TELESCOPING, validate_references
 from alightsize.loads.telescoping import TelescopingLeg
-from alightsize.model.gravity import read_gravity
+from alightsize.model.envelope import Envelope
 from alightsize.model.materials import library, material_paths
-from alightsize.model.scene_config import LANDER_ONLY, SceneConfig, read_scene
+from alightsize.model.gravity import Gravity
+from alightsize.model.legs import TrussTable
+from alightsize.model.scene_config import (Cell, SceneConfig, SceneDocument, SceneFile, TelescopingLegs,
+                                           build_scene, lander_scene)
 from alightsize.pipeline.config import UNIT_SYSTEMS, DesignSpec, read_design, read_items
 from alightsize.pipeline.landings import LandingSpec
 from alightsize.checks.rules import DEFAULT_RULES, RULES
-from alightsize.pipeline.items import read_required
+from alightsize.pipeline.items import RequiredFactor
 from alightsize.pipeline.members import member_item
 
 SCENE_TABLES = ("capsule", "cells", "legs", "terrain", "initial", "controls", "output")
@@ -45,145 +54,96 @@ ALL_CONFIGURATIONS = "all"           # the combined envelope of App. III cell va
 DEFAULT_SAMPLES = 100                # Monte Carlo landings: about a minute on 2 cores (docs/notes)
 
 
-@dataclass(frozen=True)
-class Envelope:
-    """Impact envelope, SI: (low, high) descent and horizontal speeds; signed (low, high) slope (negative: the
-    velocity heads into the slope) and inclination (positive: leaning toward the velocity); the Monte Carlo's
-    heading range; largest roll rate (either sign); footpad friction range (None: the scene's terrain)."""
-
-    vertical: tuple[float, float]
-    horizontal: tuple[float, float]
-    slope: tuple[float, float]
-    inclination: tuple[float, float]
-    roll_rate: float
-    friction: tuple[float, float] | None
-    heading: tuple[float, float] = (-pi, pi)
+class MonteCarlo(Table):
+    samples: Integer(0, 100_000) = DEFAULT_SAMPLES
+    seed: Integer(0, SEED_MAX) = 1
+    cell_scatter: Number("nonnegative") = 0.0
+    note: str = ""
 
 
-@dataclass(frozen=True)
-class Requirements:
-    required: float
-    decimals: int | None
-    weight_goal: float | None
-    criteria: Criteria
+class Requirements(RequiredFactor):
+    """`[requirements]`: the design factor members must reach, the landing criteria and the impact envelope."""
+
+    decimals: Integer(0, 12) | None = None
+    weight_goal: Number() | None = None
+    criteria: CriteriaTable = CriteriaTable()
     envelope: Envelope
-    samples: int
-    seed: int
-    cell_scatter: float
+    monte_carlo: MonteCarlo = MonteCarlo()
+    note: str = ""
+
+    @model_validator(mode="after")
+    def _goal(self):
+        if self.weight_goal is not None and not 0 < self.weight_goal < 1:
+            raise refuse("the leg system's weight as a fraction of the capsule, in (0, 1)", repr(self.weight_goal),
+                         "weight_goal")
+        return self
+
+    @property
+    def required(self) -> float:
+        return 1.25 if self.required_design_factor is None else self.required_design_factor
+
+
+class LanderHead(Table):
+    name: Name | None = None
+    title: str | None = None
+    gravity: Gravity = G0
+    rules: Literal[tuple(RULES)] = DEFAULT_RULES
+    materials: list[str] = []
+    note: str = ""
+
+
+class ReportTable(Table):
+    units: Literal[UNIT_SYSTEMS] = "SI"
+
+
+class LanderFile(Table):
+    """A lander file's own tables, typed; the scene tables are the scene model's (SceneFile), [structure],
+    [members] and [[item]] are read with the design config's readers, [synthesis] by alightsize.synthesis."""
+
+    lander: LanderHead
+    requirements: Requirements
+    report: ReportTable = ReportTable()
+    structure: dict = {}
+    members: dict = {}
+    item: list = []
+    synthesis: dict = {}
+    capsule: Any = None
+    cells: Any = None
+    legs: Any = None
+    terrain: Any = None
+    initial: Any = None
+    controls: Any = None
+    output: Any = None
 
 
 @dataclass(frozen=True)
 class Lander:
-    """A lander as read: its design (`spec`, what `alightsize.design` runs), its nominal landing scene and its
-    requirements."""
+    """A lander as read: its design (`spec`, what `alightsize.design` runs), its nominal landing scene (and the
+    scene document its landing cases vary) and its requirements."""
 
     spec: DesignSpec
     scene: SceneConfig
     requirements: Requirements
+    document: SceneDocument
 
     @property
     def study(self) -> Study:
         return self.spec.landings.study
 
 
-def is_lander(path: str | Path) -> bool:
-    """Whether a TOML file is a lander file (it has a [lander] table)."""
-    return "lander" in load_toml(path).data
-
-
-def _range(node: Node, key: str, dim: str, default: tuple[float, float] | None) -> tuple[float, float] | None:
-    """A value or a [low, high] range; a single value v is the range (v, v)."""
-    if not node.has(key):
-        return default
-    raw = node.raw(key)
-    if isinstance(raw, list):
-        if len(raw) != 2:
-            raise node.error(key, "a value or a [low, high] range", repr(raw))
-        lo, hi = (node.parse_quantity(f"{key}[{i}]", v, dim, positive=False) for i, v in enumerate(raw))
-    else:
-        lo = hi = node.parse_quantity(key, raw, dim, positive=False)
-    if lo < 0 or hi < lo:
-        raise node.error(key, "0 <= low <= high", repr(raw))
-    return lo + 0.0, hi + 0.0          # "-0 m/s" as 0 (numpy's uniform refuses a high of -0.0 over a low of 0.0)
-
-
-def _signed(node: Node, key: str, limit: float) -> tuple[float, float]:
-    """An angle range: a largest magnitude v (either sign: (-v, v)) or a signed [low, high] range."""
-    if not node.has(key):
-        return 0.0, 0.0
-    raw = node.raw(key)
-    if isinstance(raw, list):
-        if len(raw) != 2:
-            raise node.error(key, "a largest magnitude or a signed [low, high] range", repr(raw))
-        lo, hi = (node.parse_quantity(f"{key}[{i}]", v, "angle", positive=False) for i, v in enumerate(raw))
-    else:
-        hi = node.quantity(key, "angle", 0.0, positive=False)
-        if hi < 0:
-            raise node.error(key, "a largest magnitude (either sign is landed) or a signed [low, high] range",
-                             "a negative value")
-        lo = -hi
-    if not (lo <= hi and max(abs(lo), abs(hi)) < limit):
-        raise node.error(key, f"low <= high, each within +-{degrees(limit):.0f} deg (exclusive)", repr(raw))
-    return lo, hi
-
-
-def _envelope(node: Node) -> Envelope:
-    node.allow(("vertical_speed", "horizontal_speed", "slope", "inclination", "heading", "roll_rate", "friction",
-                "note"))
-    vertical = _range(node, "vertical_speed", "velocity", None)
-    if vertical is None or vertical[1] <= 0:
-        raise node.error("vertical_speed", "a descent speed above 0, or a [low, high] range",
-                         repr(node.raw("vertical_speed", None)))
-    horizontal = _range(node, "horizontal_speed", "velocity", (0.0, 0.0))
-    slope = _signed(node, "slope", pi / 2)
-    incl = _signed(node, "inclination", pi)
-    heading = _signed(node, "heading", 2 * pi) if node.has("heading") else (-pi, pi)
-    rate = node.quantity("roll_rate", "angular_velocity", 0.0, positive=False) if node.has("roll_rate") else 0.0
-    if rate < 0:
-        raise node.error("roll_rate", "a largest magnitude (either sign is landed)", "a negative value")
-    friction = _range(node, "friction", "dimensionless", None)
-    node.string("note", "")
-    node.finish()
-    return Envelope(vertical, horizontal, slope, incl, rate, friction, heading)
-
-
-def _requirements(node: Node) -> Requirements:
-    node.allow(("required_design_factor", "allow_below_one", "decimals", "weight_goal", "criteria", "envelope",
-                "monte_carlo", "note"))
-    required = read_required(node, 1.25)
-    decimals = node.integer("decimals", None, minimum=0, maximum=12)
-    goal = node.number("weight_goal", None)
-    if goal is not None and not 0 < goal < 1:
-        raise node.error("weight_goal", "the leg system's weight as a fraction of the capsule, in (0, 1)", repr(goal))
-    criteria = read_criteria(node.table("criteria", optional=True)) or Criteria(None, None)
-    envelope = _envelope(node.table("envelope"))
-    mc = node.table("monte_carlo", optional=True)
-    samples, seed, scatter = DEFAULT_SAMPLES, 1, 0.0
-    if mc:
-        mc.allow(("samples", "seed", "cell_scatter", "note"))
-        samples = mc.integer("samples", DEFAULT_SAMPLES, minimum=0, maximum=100_000)
-        seed = mc.integer("seed", 1, minimum=0, maximum=SEED_MAX)
-        scatter = mc.number("cell_scatter", 0.0, positive=False)
-        mc.string("note", "")
-        mc.finish()
-    node.string("note", "")
-    node.finish()
-    return Requirements(required, decimals, goal, criteria, envelope, samples, seed, scatter)
-
-
 def _q(x: float, unit: str) -> str:
     return f"{x:.12g} {unit}"
 
 
-def landing_cases(path: Path, name: str, req: Requirements, legs: int, base: dict | None = None) -> Study:
+def landing_cases(scene: SceneDocument, name: str, req: Requirements, legs: int, base: dict | None = None) -> Study:
     """The envelope's corners (each range at both ends, a slope or inclination magnitude and the roll rate at
     either sign, a leg leading or two legs straddling the velocity) and `samples` seeded Monte Carlo landings drawn
     uniformly over the envelope (heading, roll and, with cell_scatter, every cell's crushing force as well); every
     run lands the lander file's scene with the overrides `base` (a design variant) under its own."""
     base = dict(base or {})
-    e = req.envelope
-    axes: dict[str, list] = {"initial.velocity[2]": [_q(-v, "m/s") for v in sorted(set(e.vertical))],
-                             "initial.velocity[1]": [_q(h, "m/s") for h in sorted(set(e.horizontal))],
+    e, mc = req.envelope, req.monte_carlo
+    axes: dict[str, list] = {"initial.velocity[2]": [_q(-v, "m/s") for v in sorted(set(e.vertical_speed))],
+                             "initial.velocity[1]": [_q(h, "m/s") for h in sorted(set(e.horizontal_speed))],
                              "initial.roll": ["0.0 deg", _q(180.0 / legs, "deg")]}
     signed = (("terrain.slope", tuple(map(degrees, e.slope)), "deg"),
               ("initial.inclination", tuple(map(degrees, e.inclination)), "deg"),
@@ -201,74 +161,105 @@ def landing_cases(path: Path, name: str, req: Requirements, legs: int, base: dic
     width = len(str(len(combos)))
     points = [(f"corner-{n + 1:0{width}d}", "lander", {**fixed, **dict(zip(axes, c))}, dict(zip(axes, c)), None)
               for n, c in enumerate(combos)]
-    disp = [Dispersion("initial.velocity[2]", "uniform", (-e.vertical[1], -e.vertical[0]), "m/s", False),
-            Dispersion("initial.velocity[1]", "uniform", e.horizontal, "m/s", False),
+    disp = [Dispersion("initial.velocity[2]", "uniform", (-e.vertical_speed[1], -e.vertical_speed[0]), "m/s", False),
+            Dispersion("initial.velocity[1]", "uniform", e.horizontal_speed, "m/s", False),
             Dispersion("initial.heading", "uniform", tuple(map(degrees, e.heading)), "deg", False),
             Dispersion("initial.roll", "uniform", (0.0, 360.0 / legs), "deg", False)]
     disp += [Dispersion(key, "uniform", (lo, hi), unit, False) for key, (lo, hi), unit in signed if lo != hi]
     if e.friction is not None and e.friction[0] < e.friction[1]:
         disp.append(Dispersion("terrain.mu_dynamic", "uniform", e.friction, "", False))
-    if req.cell_scatter > 0:
-        disp.append(Dispersion("legs.cell_factors", "normal", (1.0, req.cell_scatter), "", True))
-    runs = [Run(*p[:2], path, *p[2:]) for p in points]
-    if req.samples:
+    if mc.cell_scatter > 0:
+        disp.append(Dispersion("legs.cell_factors", "normal", (1.0, mc.cell_scatter), "", True))
+    runs = [Run(*p[:2], scene, *p[2:]) for p in points]
+    if mc.samples:
         base = [("mc", "lander", dict(fixed), {}, None)]
-        runs += [Run(rid, skey, path, over, params, ref)
-                 for rid, skey, over, params, ref in _sampled(base, disp, req.samples, req.seed, {"lander": path})]
+        runs += [Run(rid, skey, scene, over, params, ref)
+                 for rid, skey, over, params, ref in _sampled(base, disp, mc.samples, mc.seed, {"lander": scene})]
     plot = ("initial.velocity[1]", "initial.velocity[2]")
-    return Study(path, name, f"Landing cases of {name}: {len(combos)} envelope corners, {req.samples} Monte Carlo",
-                 tuple(runs), req.criteria, tuple(k for k in axes if k != "initial.velocity[2]"), "initial.velocity[2]",
-                 False, req.seed, plot)
+    title = f"Landing cases of {name}: {len(combos)} envelope corners, {mc.samples} Monte Carlo"
+    return Study(scene.path, name, title,
+                 tuple(runs), req.criteria.criteria(), tuple(k for k in axes if k != "initial.velocity[2]"),
+                 "initial.velocity[2]", False, mc.seed, plot)
 
 
 def _crush(curve) -> float:
     return crush_stroke(curve.deflection, curve.force)[0]
 
 
-def _loads_config(root: Node, path: Path, name: str, scene: SceneConfig,
+class TelescopingStructure(Table):
+    """[structure] of telescoping legs: what the App. III free body needs beyond the legs and cells."""
+
+    bearing_length: Quantity("length")
+    friction: Number("any") = 0.05
+    note: str = ""
+
+    @model_validator(mode="after")
+    def _friction(self):
+        if not 0 <= self.friction < 1:
+            raise refuse("a friction coefficient in [0, 1)", f"{self.friction}", "friction")
+        return self
+
+
+class ArticulatedStructure(Table):
+    """[structure] of articulated legs: the truss and the psi swept for the App. III envelopes of the lander's
+    own cells (configuration `name`), other cell variants and their combinations."""
+
+    truss: TrussTable
+    psi_final: Quantity("angle", "any")
+    grid: GridTable = GridTable()
+    configuration: list[Configuration] = []
+    combined: list[Combined] = []
+    name: Name | None = None
+    note: str = ""
+
+    @model_validator(mode="after")
+    def _cases(self, info: ValidationInfo):
+        p0, p1 = info.context["psi_initial"], self.psi_final
+        if not (radians(-90) < p0 < p1 < radians(90)):
+            raise refuse("-90 deg < [legs] psi_initial < psi_final < 90 deg",
+                          f"{degrees(p0):g} and {degrees(p1):g} deg", "psi_final")
+        names = [c.name for c in self.configuration] + [self.name or info.context["name"]]
+        dup = next((n for n in names if names.count(n) > 1), None)
+        if dup:
+            raise refuse("configuration names unique (with the lander's own, `name`)", f"{dup!r} twice",
+                         "configuration")
+        check_combined(names, self.combined)
+        return self
+
+
+def _loads_config(path: Path, name: str, structure: dict, scene: SceneFile, legs: tuple,
                   units: str) -> tuple[LoadsConfig, tuple[str, ...]]:
     """The App. III loads config of the lander's own legs and cells (and the envelopes its members use)."""
-    node = root.table("structure", optional=True) or Node(root.file, "structure", {}, root.context)
-    leg = scene.scene.legs[0]
-    if isinstance(leg, SimTelescopingLeg):
-        node.allow(("bearing_length", "friction", "note"))
+    file = str(path)
+    if isinstance(scene.legs, TelescopingLegs):
+        s = validate(TelescopingStructure, structure, file, "structure")
+        leg = legs[0]
         if not leg.pads:
-            raise root.error("legs.pad_angles", "rotational pads on the telescoping leg (App. III free body)", "none")
+            raise InputError(file, "legs.pad_angles", "rotational pads on the telescoping leg (App. III free body)",
+                             "none")
         tele = TelescopingLeg(_crush(leg.axial.curve), _crush(leg.pads[0].curve), leg.pad_lever, leg.rho,
-                              node.quantity("bearing_length", "length"), node.number("friction", 0.05, positive=False))
-        node.string("note", "")
-        node.finish()
-        if not 0 <= tele.friction < 1:
-            raise node.error("friction", "a friction coefficient in [0, 1)", f"{tele.friction}")
+                              s.bearing_length, s.friction)
         return LoadsConfig(path, f"{name} telescoping leg (App. III free body)", units, default_grid(), (), (), tele), \
             (TELESCOPING,)
-    node.allow(("truss", "psi_final", "grid", "configuration", "combined", "name", "note"))
-    legs, cells = root.data["legs"], root.data["cells"]
-    own_name = node.string("name", name)
-    own = {"name": own_name, "psi_initial": legs["psi_initial"], "psi_final": node.raw("psi_final"),
-           "upper": {k: cells[legs["upper"]][k] for k in ("deflection", "force")},
-           "lower": {k: cells[legs["lower"]][k] for k in ("deflection", "force")}}
-    if "length_scale" in legs:
-        own["length_scale"] = legs["length_scale"]
-    extra = [n.data for n in node.tables("configuration", optional=True)]     # read in full by read_loads below
-    combined = [n.data for n in node.tables("combined", optional=True)]
-    if extra and not combined:
-        combined.append({"name": ALL_CONFIGURATIONS, "configurations": [c.get("name") for c in extra] + [own_name]})
-    data = {"geometry": legs["geometry"], "truss": node.raw("truss"), "configuration": [*extra, own],
-            "combined": combined, **({"grid": node.raw("grid")} if node.has("grid") else {})}
-    node.string("note", "")
-    node.finish()
-    cfg = read_loads(path, Node(root.file, "structure", data, root.context))
-    cfg = replace(cfg, title=f"{name} articulated leg (App. III envelopes)", units=units)
-    return cfg, (own_name, *(c[0] for c in cfg.combined))
+    own = scene.legs
+    s = validate(ArticulatedStructure, structure, file, "structure", psi_initial=own.psi_initial, name=name)
+    upper, lower = scene.cells[own.upper], scene.cells[own.lower]
+    cases = [c.case(own.geometry, s.truss) for c in s.configuration]
+    cases.append(LegCase(s.name or name, own.geometry.geometry(own.length_scale), s.truss.truss(),
+                         CrushCurve(upper.deflection, upper.force), CrushCurve(lower.deflection, lower.force),
+                         own.psi_initial, s.psi_final))
+    combined = [(c.name, tuple(c.configurations)) for c in s.combined]
+    if len(cases) > 1 and not combined:
+        combined.append((ALL_CONFIGURATIONS, tuple(c.name for c in cases)))
+    cfg = LoadsConfig(path, f"{name} articulated leg (App. III envelopes)", units, s.grid.grid(), tuple(cases),
+                      tuple(combined), None)
+    return cfg, (cases[-1].name, *(c[0] for c in combined))
 
 
-def cell_curve(root: Node, cell: str) -> tuple[list[float], list[float]]:
-    """(deflections m, forces N) of the `[cells.NAME]` table of a lander file as written."""
-    node = root.table("cells").table(cell)
-    return ([node.parse_quantity(f"deflection[{i}]", v, "length", positive=False)
-             for i, v in enumerate(node.raw("deflection"))],
-            [node.parse_quantity(f"force[{i}]", v, "force", positive=False) for i, v in enumerate(node.raw("force"))])
+def cell_curve(root: Node, cell: str) -> tuple[tuple[float, ...], tuple[float, ...]]:
+    """(deflections m, forces N) of the `[cells.NAME]` table of a lander file as written (no `factor`)."""
+    c = validate(Cell, root.table("cells").table(cell).data, root.file, f"cells.{cell}")
+    return c.deflection, c.force
 
 
 def crush_stroke(deflection, force) -> tuple[float, float]:
@@ -277,7 +268,7 @@ def crush_stroke(deflection, force) -> tuple[float, float]:
     return max(force[:-1]), deflection[-2]
 
 
-def _crushable(node: Node, root: Node, mats: dict) -> Node:
+def _crushable(node: Node, root: Node, scene: SceneFile, mats: dict) -> Node:
     """An item weighed as a cell's crushable core, `weight = {method = "crushable", cell = NAME}`, as the prism
     it is: area = crushing force / crush strength, length = stroke / usable stroke fraction (App. V)."""
     w = node.data.get("weight")
@@ -286,13 +277,13 @@ def _crushable(node: Node, root: Node, mats: dict) -> Node:
     wn = Node(node.file, f"{node.path}.weight", dict(w), root.context)
     wn.allow(("method", "cell", "allowance", "extra", "label", "note"))
     cell = wn.string("cell")
-    if cell not in (root.data.get("cells") or {}):
+    if cell not in scene.cells:
         raise wn.error("cell", "the name of a [cells.NAME] table", repr(cell))
     mat = mats.get(str(node.data.get("material")))
     if mat is None or mat.crush_strength is None or mat.stroke_fraction is None:
         raise node.error("material", "a crushable material (with crush_strength and stroke_fraction)",
                          repr(node.data.get("material")))
-    force, stroke = crush_stroke(*cell_curve(root, cell))
+    force, stroke = crush_stroke(scene.cells[cell].deflection, scene.cells[cell].force)
     prism = {k: v for k, v in w.items() if k not in ("method", "cell")}
     prism.update(method="prism", area=f"{force / mat.crush_strength!r} m^2",
                  length=f"{stroke / mat.stroke_fraction!r} m")
@@ -301,38 +292,27 @@ def _crushable(node: Node, root: Node, mats: dict) -> Node:
     return Node(node.file, node.path, {**node.data, "weight": prism}, root.context)
 
 
-def read_lander(path: str | Path, overrides: dict | None = None) -> Lander:
-    """Read and validate a lander file, with `overrides` (dotted key path -> TOML value, e.g.
-    {"legs.radius": "2 m"}) applied first; any problem is an InputError naming file, key path, what was
-    expected and what was found. Nothing is computed (`alightsize.design` runs the analyses)."""
+def read_lander(path: str | Path, overrides: dict | None = None, root: Node | None = None) -> Lander:
+    """Read and validate a lander file (or its TOML `root`, already loaded), with `overrides` (dotted key path ->
+    TOML value, e.g. {"legs.radius": "2 m"}) applied first; any problem is an InputError naming file, key path,
+    what was expected and what was found. Nothing is computed (`alightsize.design` runs the analyses)."""
     path = Path(path)
-    root = load_toml(path)
+    root = load_toml(path) if root is None else root
     for key, value in (overrides or {}).items():
         root.set_path(key, value)
     scene_over = {k: v for k, v in (overrides or {}).items() if k.split(".")[0] in SCENE_TABLES}
-    root.allow((*SCENE_TABLES, *LANDER_ONLY))
-    head = root.table("lander")
-    head.allow(("name", "title", "gravity", "rules", "materials", "note"))
-    name = head.string("name", path.stem)
-    if not NAME.fullmatch(name):
-        raise head.error("name", "1-31 letters, digits, '_', '.' or '-' (it names files and sheets)", repr(name))
-    title = head.string("title", name)
-    rules = head.string("rules", DEFAULT_RULES, choices=tuple(RULES))
-    extra = material_paths(head, "materials", path.parent)
-    if head.has("gravity"):
-        read_gravity(head, "gravity")             # checked here, so an error names [lander], not the scene
-    head.string("note", "")
-    head.finish()
-    req = _requirements(root.table("requirements"))  # before the scene, which takes its nominal speeds from it
-    scene = read_scene(path, scene_over)
-    root.raw("synthesis", None)                   # alightsize.synthesis reads it
-    for t in SCENE_TABLES:
-        root.raw(t, None)
-    rep = root.table("report", optional=True)
-    units = rep.string("units", "SI", choices=UNIT_SYSTEMS) if rep else "SI"
-    if rep:
-        rep.finish()
-    loads, envelopes = _loads_config(root, path, name, scene, units)
+    lander = validate(LanderFile, root.data, str(path))
+    head, req, units = lander.lander, lander.requirements, lander.report.units
+    name = head.name if head.name is not None else path.stem
+    title = head.title if head.title is not None else name
+    rules = head.rules
+    extra = material_paths(head.materials, path.parent, str(path), "lander.materials")
+    document = lander_scene(path, root.data, req.envelope.nominal_velocity())
+    scene_file = validate(SceneFile, document.data, str(path))
+    scene = build_scene(path, scene_file)
+    for t in ("lander", "requirements", "report", "structure", "synthesis", *SCENE_TABLES):
+        root.raw(t, None)                         # read above (alightsize.synthesis reads [synthesis])
+    loads, envelopes = _loads_config(path, name, lander.structure, scene_file, scene.scene.legs, units)
     mats = library(extra)
     members = root.table("members", optional=True)
     nodes = []
@@ -343,21 +323,22 @@ def read_lander(path: str | Path, overrides: dict | None = None) -> Lander:
         nodes.append(Node(root.file, m.path, data, root.context))
     if members:
         members.finish()
-    nodes += [_crushable(n, root, mats) for n in root.tables("item", optional=True, label="name")]
+    nodes += [_crushable(n, root, scene_file, mats) for n in root.tables("item", optional=True, label="name")]
     if not nodes:
         raise root.error("members", "at least one [members.NAME] table or [[item]]", "neither")
     validate_references(root, loads)
     read_items(tuple(nodes), mats, req.required, root, rules)
     root.finish()
-    study = landing_cases(path, name, req, len(scene.scene.legs), scene_over)
+    study = landing_cases(document, name, req, len(scene.scene.legs), scene_over)
     member_loads = (partial(telescoping_dynamic_envelope, leg=loads.telescoping) if loads.telescoping
                     else partial(dynamic_envelope, truss=loads.cases[0].truss))
     landings = LandingSpec(study, envelopes, "criteria", member_loads)
     spec = DesignSpec(path, name, title, scene.scene.mass, len(scene.scene.legs), units, req.required, req.decimals,
                       mats, tuple(nodes), loads, landings, req.weight_goal, rules)
-    return Lander(spec, scene, req)
+    return Lander(spec, scene, req, document)
 
 
 def read_input(path: str | Path) -> DesignSpec:
     """A lander file or a design config, as read (`alightsize design` and `audit` take either)."""
-    return read_lander(path).spec if is_lander(path) else read_design(path)
+    root = load_toml(path)
+    return read_lander(path, root=root).spec if "lander" in root.data else read_design(path, root)

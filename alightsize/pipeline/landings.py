@@ -23,9 +23,10 @@ from dataclasses import dataclass
 from functools import cached_property
 from math import degrees, radians
 from pathlib import Path
-from typing import Callable
+from typing import Callable, Literal
 
-from alightsize.common.config import Node, is_file
+from alightsize.common.config import is_file
+from alightsize.common.typed import Table
 from alightsize.common.errors import InputError
 from alightsize.loads.config import LoadsConfig
 from alightsize.loads.histories import dynamic_envelope
@@ -178,29 +179,35 @@ class LandingSpec:
     member_loads: Callable | None = None
 
 
-def read_landing_spec(node: Node, design: Path, loads: LoadsConfig | None) -> LandingSpec:
-    """`[landings]` of a design config, checked against the loads config's envelope names."""
-    node.allow(("study", "envelopes", "role", "note"))
-    path = design.parent / node.string("study")
-    names = tuple(node.strings("envelopes"))
-    role = node.string("role", "criteria", choices=ROLES)
-    node.string("note", "")
-    node.finish()
+class LandingsTable(Table):
+    """`[landings]` of a design config."""
+
+    study: str
+    envelopes: list[str]
+    role: Literal[ROLES] = "criteria"
+    note: str = ""
+
+
+def landing_spec(t: LandingsTable, design: Path, loads: LoadsConfig | None) -> LandingSpec:
+    """The landing cases `[landings]` names, checked against the loads config's envelope names."""
+    file = str(design)
     if loads is None or not loads.cases:
-        raise node.error("study", "landing cases beside an articulated [loads] file (its truss angles and "
-                         "envelopes)", "no articulated [loads] configuration")
+        raise InputError(file, "landings.study", "landing cases beside an articulated [loads] file (its truss angles "
+                         "and envelopes)", "no articulated [loads] configuration")
     known = [c.name for c in loads.cases] + [c[0] for c in loads.combined]
-    for n in names:
+    for n in t.envelopes:
         if n not in known:
-            raise node.error("envelopes", "names of envelopes of the [loads] file (" + ", ".join(known) + ")", repr(n))
+            raise InputError(file, "landings.envelopes", "names of envelopes of the [loads] file (" + ", ".join(known)
+                             + ")", repr(n))
+    path = design.parent / t.study
     if not is_file(path):
-        raise node.error("study", "the path of a study TOML (relative to the design config)",
+        raise InputError(file, "landings.study", "the path of a study TOML (relative to the design config)",
                          f"{str(path)!r}: no such file")
     study = read_study(path)
-    if role == "criteria" and study.criteria is None:
-        raise node.error("role", f"role = \"load_cases\", or [criteria] in {path.name} for the landings to meet",
-                         "role = \"criteria\" (the default) and a study without [criteria]")
-    return LandingSpec(study, names, role, partial(dynamic_envelope, truss=loads.cases[0].truss))
+    if t.role == "criteria" and study.criteria is None:
+        raise InputError(file, "landings.role", f"role = \"load_cases\", or [criteria] in {path.name} for the "
+                         "landings to meet", "role = \"criteria\" (the default) and a study without [criteria]")
+    return LandingSpec(study, tuple(t.envelopes), t.role, partial(dynamic_envelope, truss=loads.cases[0].truss))
 
 
 def run_landings(spec: LandingSpec, loads: LoadsResult, out: Path | None,

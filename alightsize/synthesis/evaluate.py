@@ -13,6 +13,7 @@ Monte Carlo sample (a candidate that fails a corner is infeasible whatever the s
 
 from __future__ import annotations
 
+import copy
 import hashlib
 import json
 import sqlite3
@@ -21,7 +22,7 @@ from dataclasses import asdict, dataclass, replace
 from pathlib import Path
 
 from alightsize import __version__
-from alightsize.common.config import load_toml
+from alightsize.common.config import Node, load_toml
 from alightsize.common.errors import InputError
 from alightsize.landings.criteria import violation_kinds
 from alightsize.landings.run_store import RunStore
@@ -86,12 +87,12 @@ class Evaluator:
 
     def __init__(self, path: Path, free: tuple[FreeParameter, ...], out: Path, context: dict | None = None,
                  backend: str = "pool", workers: int | None = None, scheduler: str | None = None,
-                 stroke_margin: float = 0.0, quiet: bool = True):
+                 stroke_margin: float = 0.0, quiet: bool = True, data: dict | None = None):
         self.path, self.free, self.out = Path(path), free, Path(out)
         self.context = dict(context or {})
         self.backend, self.workers, self.scheduler, self.quiet = backend, workers, scheduler, quiet
         self.stroke_margin = stroke_margin
-        self.root = load_toml(self.path)
+        self.root = load_toml(self.path) if data is None else Node(self.path, "", data)    # `data`: as read
         self.file_hash = hashlib.sha256(self.path.read_bytes()).hexdigest()
         self.out.mkdir(parents=True, exist_ok=True)
         RunStore(self.out / "runs.sqlite").close()                 # creates it in WAL mode
@@ -108,7 +109,8 @@ class Evaluator:
         return hashlib.sha256(text.encode()).hexdigest()[:16]
 
     def lander(self, x, extra: dict | None = None) -> Lander:
-        return read_lander(self.path, {**self.overrides(x), **(extra or {})})
+        root = Node(self.root.file, "", copy.deepcopy(self.root.data))     # the file as read, not read again
+        return read_lander(self.path, {**self.overrides(x), **(extra or {})}, root)
 
     def rows(self, lander: Lander, runs: list[Run]) -> list[dict]:
         """Land `runs` of a candidate (those not stored) and return their rows under the study's run ids."""

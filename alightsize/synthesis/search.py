@@ -133,12 +133,12 @@ def _best(history: list[tuple[int, Evaluation]]) -> Evaluation:
     return min((e for _, e in history), key=lambda e: e.objective)
 
 
-def synthesize(path: str | Path, out: str | Path, start: dict[str, float] | None = None, trade: bool = True,
-               backend: str = "pool", workers: int | None = None, scheduler: str | None = None,
+def synthesize(path: str | Path | SynthesisSpec, out: str | Path, start: dict[str, float] | None = None,
+               trade: bool = True, backend: str = "pool", workers: int | None = None, scheduler: str | None = None,
                log: Callable[[str], None] = lambda s: None) -> SynthesisResult:
-    """Search the lightest landing system of a lander file's `[synthesis]` (resumable in `out`). `start`
-    replaces free parameters' starting values (SI, by key)."""
-    spec = read_synthesis(path)
+    """Search the lightest landing system of a lander file's `[synthesis]` (a path, or the spec already read;
+    resumable in `out`). `start` replaces free parameters' starting values (SI, by key)."""
+    spec = path if isinstance(path, SynthesisSpec) else read_synthesis(path)
     out = Path(out)
     t0 = time.perf_counter()
     x0 = [p.start for p in spec.free]
@@ -148,7 +148,7 @@ def synthesize(path: str | Path, out: str | Path, start: dict[str, float] | None
             raise InputError("(start)", k, f"a start within [{p.show(p.low)}, {p.show(p.high)}]", p.show(v))
         x0[spec.free.index(p)] = v
     samples = {} if spec.budget.samples is None else {"requirements.monte_carlo.samples": spec.budget.samples}
-    ev = Evaluator(spec.path, spec.free, out, samples, backend, workers, scheduler, spec.stroke_margin)
+    ev = Evaluator(spec.path, spec.free, out, samples, backend, workers, scheduler, spec.stroke_margin, data=spec.data)
     log(f"{spec.path.name}: {len(spec.free)} free parameters, up to {spec.budget.generations + 1} generations "
         f"of {spec.budget.population * len(spec.free)} candidates -> {out / 'runs.sqlite'}")
     history = search(ev, spec, spec.budget, x0, log)
@@ -172,7 +172,7 @@ def synthesize(path: str | Path, out: str | Path, start: dict[str, float] | None
             for value, label in values:
                 log(f"trade point {axis} = {label}")
                 tev = Evaluator(spec.path, spec.free, out, {**_trade_context(ev, axis, value), **_samples(spec)},
-                                backend, workers, scheduler, spec.stroke_margin)
+                                backend, workers, scheduler, spec.stroke_margin, data=spec.data)
                 hist = search(tev, spec, spec.trade_budget, best.x, log)
                 result.trade[axis].append(TradePoint(axis, value, label, _best(hist)))
                 ev.computed += tev.computed
@@ -198,4 +198,4 @@ def _trade_context(ev: Evaluator, axis: str, value: float) -> dict:
         m = max(abs(lo), abs(hi))
         rng = (lo * value / m, hi * value / m) if m > 0 else (-value, value)
         return {TRADE_KEYS[axis]: [f"{rng[0]!r} rad", f"{rng[1]!r} rad"]}
-    return {TRADE_KEYS[axis]: [f"{min(env.horizontal[0], value)!r} m/s", f"{value!r} m/s"]}
+    return {TRADE_KEYS[axis]: [f"{min(env.horizontal_speed[0], value)!r} m/s", f"{value!r} m/s"]}

@@ -26,7 +26,7 @@ factor), so their sections are free without being listed.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from math import isfinite
 from pathlib import Path
 
@@ -82,6 +82,7 @@ class SynthesisSpec:
     trade: dict[str, tuple[tuple[float, str], ...]]      # axis -> ((SI value, as written), ...)
     trade_budget: Budget
     stroke_margin: float = 0.0          # search only: the fraction of each cell's stroke kept unused
+    data: dict = field(default_factory=dict, repr=False)     # the lander file as read (each candidate varies it)
 
 
 def _quantity(node: Node, key: str, text) -> tuple[float, str, float]:
@@ -183,7 +184,7 @@ def read_synthesis(path: str | Path) -> SynthesisSpec:
             raise InputError(str(path), f"synthesis.free.{p.key}",
                              f"bounds that hold the file's own value {p.show(p.start)} (the starting design)",
                              f"[{p.show(p.low)}, {p.show(p.high)}]")
-    return SynthesisSpec(path, free, seed, budget, check_samples, check_seed, trade, trade_budget, margin)
+    return SynthesisSpec(path, free, seed, budget, check_samples, check_seed, trade, trade_budget, margin, root.data)
 
 
 def free_parameter(spec: SynthesisSpec, key: str) -> FreeParameter:
