@@ -70,16 +70,22 @@ FOOT_TOL = 1e-4    # m: a footpad on soil whose event is located this near a roc
 
 RIGID, HELD, SINKING = -1.0, 0.0, 1.0     # soil modes of a footpad on the ground
 
-PadModel = namedtuple("PadModel", "mu_s mu_d mass band soil area diameter")
+PadModel = namedtuple("PadModel", "mu_s mu_d mass band soil area diameter held")
 """Static and dynamic friction, footpad mass (kg), Karnopp band (m/s), the soil (alightsize_sim.soil.Soil.packed
-as a tuple), the footpad's bearing area (m^2; 0: rigid ground, no soil) and diameter (m; round footpads)."""
+as a tuple), the footpad's bearing area (m^2; 0: rigid ground, no soil) and diameter (m; round footpads), and
+whether footpads are held in the plane (non-slip friction: they only sink)."""
 
 
-def pad_model(mu_s: float, mu_d: float, mass: float, band: float, soil=None, diameter: float = 0.0) -> PadModel:
-    """A PadModel of floats for round footpads of the given diameter; without a soil (None) the ground is rigid."""
+def pad_model(mu_s: float, mu_d: float, mass: float, band: float, soil=None, diameter: float = 0.0,
+              held: bool = False) -> PadModel:
+    """A PadModel of floats for round footpads of the given diameter; without a soil (None) the ground is rigid.
+    `held`: the friction is the report's non-slip device (landing.holds), so a footpad never slides in the plane,
+    as on rigid ground; it still sinks into the soil. A friction limit of 1e6 FE3 taken literally slides a footpad
+    only as its load FE3 passes through zero, where that limit's rate mu_D dFE3/du through the cells' dampers
+    makes the slide's band a stiff system (mu_D c / m ~ 2e9 1/s for the 1966 legs' 4,400 N s/m and 5 lb)."""
     packed = tuple(float(x) for x in soil.packed) if soil is not None else (0.0,) * 6
     d = float(diameter) if soil is not None else 0.0
-    return PadModel(float(mu_s), float(mu_d), float(mass), float(band), packed, np.pi * d * d / 4.0, d)
+    return PadModel(float(mu_s), float(mu_d), float(mass), float(band), packed, np.pi * d * d / 4.0, d, bool(held))
 
 
 def is_pad(mu) -> bool:
@@ -155,7 +161,9 @@ def pad_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, f
     if sliding == FACE:
         return sliding, power, alpha, beta, psi, 1.0, 0.0, 0.0, 1.0
     fe = mv(R, X[0], X[1], X[2])
-    if sliding == STICK:
+    if sliding == STICK and mu.held:
+        g = 1.0
+    elif sliding == STICK:
         load, p0, p1, p2 = _split(fe, nrm)
         g = mu.mu_s * max(load, 0.0) + _plow(mu, y, i, n) + FLOOR - np.sqrt(p0 * p0 + p1 * p1 + p2 * p2)  # eq. 33
     else:
@@ -303,13 +311,15 @@ def _rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy, te
 @njit(cache=True)
 def _sink_rates(mu, y, dy, i, n, fe2, on):
     """Footpad i's soil block rates into dy (zero unless it is on the ground and sinking: s' = w,
-    m w' = FE3 - R(s)); returns (the soil's power R w, the capsule's extra power FE3 w)."""
+    m w' = FE3 - R(s), the soil resisting up to R(s) at rest: it only pushes, so a footpad at rest pushed less
+    stays at rest); returns (the soil's power R w, the capsule's extra power FE3 w)."""
     k = _sink_at(y, n, i)
     dy[k] = dy[k + 1] = dy[k + 2] = dy[k + 3] = 0.0
     if not (on and y[k + 3] == SINKING):
         return 0.0, 0.0
     w, bearing = y[k + 1], _bearing(mu, y[k])
-    dy[k], dy[k + 1] = w, (fe2 - bearing) / mu.mass
+    accel = (fe2 - bearing) / mu.mass
+    dy[k], dy[k + 1] = w, accel if w > 0.0 else max(accel, 0.0)
     return bearing * w, fe2 * w
 
 
@@ -338,7 +348,7 @@ def _switch(mu, y, i, P, sliding, down, Xt, R, terrain):
     if down:
         y[o], y[o + 1] = P[i, 0], P[i, 1]
         if sliding[i] != FACE:
-            sliding[i] = BAND
+            sliding[i] = STICK if mu.held else BAND
 
 
 @njit(cache=True)
