@@ -60,6 +60,9 @@ from .vec3 import mv
 
 NB = 14            # body states before the footpads'
 FACE, STICK, SLIDE, BAND = -1, 0, 1, 2   # FACE: held on a vertical face it met (any friction model)
+STARTED = 3        # BAND, entered from STICK by a located slip start: it does not stick again before the step loop
+                   # has made a step longer than event_tol (landing_kernel), since the start is located up to
+                   # event_tol short of the static limit, where the push may still be within the dynamic one
 FLOOR = 1e-6       # N: in-plane force below this never starts a slide (round-off at zero load)
 LEAVE = 2.0        # a banded footpad slides at LEAVE x band, a sliding one enters the band at band (hysteresis:
                    # footpads at the band's edge, coupled through the capsule, cannot switch back and forth at once)
@@ -429,11 +432,11 @@ def _start(mu, y, i, P, sliding, Xt, terrain):
 
 
 def _event(mu, y, i, P, sliding, Xt, terrain):
-    """STICK -> BAND (the static limit is passed: the footpad starts from rest); BAND -> SLIDE; SLIDE -> BAND,
+    """STICK -> BAND (STARTED: the static limit is passed, the footpad starts from rest); BAND -> SLIDE; SLIDE -> BAND,
     or STICK when the push is within the dynamic limit there."""
     if sliding[i] == STICK:
-        sliding[i] = BAND
-    elif sliding[i] == BAND:
+        sliding[i] = STARTED
+    elif sliding[i] == BAND or sliding[i] == STARTED:
         sliding[i] = SLIDE
     else:
         sliding[i] = BAND
