@@ -21,7 +21,8 @@ from numba import njit
 from . import crush_cell
 from .borrow import borrowed
 from .bundle import bundler
-from .footpad_mass import (BAND, FACE, FLOOR, STARTED, ground_event, integrates_dampers, pad_event, pad_ground, pad_rates,
+from .footpad_mass import BAND as PAD_BAND
+from .footpad_mass import (FACE, FLOOR, STARTED, ground_event, integrates_dampers, pad_event, pad_ground, pad_rates,
                            pad_settle, pad_switch)
 from .footpad_slip import contact_force, slides_by_position, slip_events
 from .rigid_body import free_flight, quat_matrix, quat_rate
@@ -814,7 +815,7 @@ def run(arrays, y, t, history, scratch):
                 if armed[i] == FRESH:
                     armed[i] = 0
                 if sliding[i] == STARTED:
-                    sliding[i] = BAND
+                    sliding[i] = PAD_BAND
         _copy1(y, y1)
         qn = np.sqrt(y[6] ** 2 + y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
         for c in range(6, 10):
