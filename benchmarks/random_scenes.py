@@ -1,19 +1,19 @@
 """Robustness sweep of the landing simulator: N seeded random landings, each run to its outcome or t_final, on a
 process pool.
 
-By default each landing draws its scene (alightsize.landings.random_landings): the leg kind and vehicle (the
+With --mixed each landing draws its scene (alightsize.landings.random_landings): the leg kind and vehicle (the
 report's telescoping configuration 1, its articulated configuration 5, or the lunar example's telescoping legs),
 massless footpads or 1-50 kg ones 0.2-0.8 m across on rigid ground or a shipped soil, 0-2 rocks or steps within
 the leg span, gravity from 1e-6 m/s^2 to 1.5 g0, every cell's loading curve (3-6 points, some with a first point
 of 1e-30 of the force), and non-slip friction in a fifth of the landings; then the slope, velocity, attitude,
-roll rate and friction of random_landing. With --terrain, --footpad-mass or --soil it is the former sweep about
-configuration 1: one random step or rock within the leg span (--terrain), footpads of that mass, that shipped
-soil under nominal 0.5 m footpads (--soil, needs --footpad-mass).
+roll rate and friction of random_landing. Without it the sweep is about configuration 1: massless footpads on
+the plane, or one random step or rock within the leg span (--terrain), footpads of that mass (--footpad-mass),
+that shipped soil under nominal 0.5 m footpads (--soil, needs --footpad-mass).
 
 Reports the outcome counts (per kind in the mixed sweep), failures (must be none), the worst energy closure,
 and the wall time per landing and per simulated second.
-Usage: python benchmarks/random_scenes.py [-n 1000] [--t-final 1.0] [--workers 2] [--terrain] [--footpad-mass KG]
-[--soil NAME] [--seed N] [--json FILE]
+Usage: python benchmarks/random_scenes.py [-n 1000] [--t-final 1.0] [--workers 2] [--mixed | [--terrain]
+[--footpad-mass KG] [--soil NAME]] [--seed N] [--first K] [--json FILE]
 """
 
 from __future__ import annotations
@@ -95,12 +95,16 @@ def main() -> None:
     ap.add_argument("--seed", type=int, default=SEED)
     ap.add_argument("--first", type=int, default=0, help="index of the first landing (to split a sweep)")
     ap.add_argument("--json", type=Path)
-    ap.add_argument("--terrain", action="store_true", help="configuration 1: a random step or rock within the leg span")
-    ap.add_argument("--footpad-mass", type=float, help="configuration 1: footpad mass, kg (0: massless)")
-    ap.add_argument("--soil", help="configuration 1: a shipped soil under the footpads (needs --footpad-mass)")
+    ap.add_argument("--mixed", action="store_true", help="draw each landing's scene (kind, footpads, soil, terrain, "
+                    "gravity, cells)")
+    ap.add_argument("--terrain", action="store_true", help="a random step or rock within the leg span")
+    ap.add_argument("--footpad-mass", type=float, default=0.0, help="footpad mass, kg (0: massless, the default)")
+    ap.add_argument("--soil", help="a shipped soil under the footpads (needs --footpad-mass)")
     a = ap.parse_args()
-    former = a.terrain or a.footpad_mass is not None or a.soil is not None
-    mass = a.footpad_mass or 0.0
+    former = not a.mixed
+    if a.mixed and (a.terrain or a.footpad_mass or a.soil):
+        ap.error("--mixed draws the terrain, footpads and soil itself")
+    mass = a.footpad_mass
     ks = range(a.first, a.first + a.n)
     for kind in ([None] if former else KINDS):                 # compile (cached) before timing
         k0 = next(k for k in range(100) if former or mixed(a.seed, k)[0] == kind)
