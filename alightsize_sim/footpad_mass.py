@@ -314,15 +314,13 @@ def _rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy, te
 @njit(cache=True)
 def _sink_rates(mu, y, dy, i, n, fe2, on):
     """Footpad i's soil block rates into dy (zero unless it is on the ground and sinking: s' = w,
-    m w' = FE3 - R(s), the soil resisting up to R(s) at rest: it only pushes, so a footpad at rest pushed less
-    stays at rest); returns (the soil's power R w, the capsule's extra power FE3 w)."""
+    m w' = FE3 - R(s)); returns (the soil's power R w, the capsule's extra power FE3 w)."""
     k = _sink_at(y, n, i)
     dy[k] = dy[k + 1] = dy[k + 2] = dy[k + 3] = 0.0
     if not (on and y[k + 3] == SINKING):
         return 0.0, 0.0
     w, bearing = y[k + 1], _bearing(mu, y[k])
-    accel = (fe2 - bearing) / mu.mass
-    dy[k], dy[k + 1] = w, accel if w > 0.0 else max(accel, 0.0)
+    dy[k], dy[k + 1] = w, (fe2 - bearing) / mu.mass
     return bearing * w, fe2 * w
 
 

@@ -5,8 +5,9 @@ With --mixed each landing draws its scene (alightsize.landings.random_landings):
 report's telescoping configuration 1, its articulated configuration 5, or the lunar example's telescoping legs),
 massless footpads or 1-50 kg ones 0.2-0.8 m across on rigid ground or a shipped soil, 0-2 rocks or steps within
 the leg span, gravity from 1e-6 m/s^2 to 1.5 g0, every cell's loading curve (3-6 points, some with a first point
-of 1e-30 of the force), and non-slip friction in a fifth of the landings; then the slope, velocity, attitude,
-roll rate and friction of random_landing. Without it the sweep is about configuration 1: massless footpads on
+of 1e-9 N: free play), and non-slip friction in a fifth of the landings; then the slope, velocity, attitude,
+roll rate and friction of random_landing. A bottomed cell does not end these landings (its stiff ramp is part of
+what they test). Without it the sweep is about configuration 1: massless footpads on
 the plane, or one random step or rock within the leg span (--terrain), footpads of that mass (--footpad-mass),
 that shipped soil under nominal 0.5 m footpads (--soil, needs --footpad-mass).
 
@@ -76,7 +77,7 @@ def one(k: int, t_final: float, features: bool = False, footpad_mass: float = 0.
         controls = base.controls
     else:
         kind, cfg, over = mixed(seed, k)
-        scene, controls = cfg.scene, cfg.controls
+        scene, controls = cfg.scene, dataclasses.replace(cfg.controls, stop_on_bottoming=False)
     res = simulate(scene, dataclasses.replace(controls, t_final=t_final))
     return {"k": k, "kind": kind, "status": res.status, "t_end": float(res.t[-1]), "wall_s": res.wall_s,
             "steps": res.steps, "rejected": res.rejected, "events": res.events,
