@@ -20,7 +20,9 @@ CLOSURE = 1e-4
 
 def _cases(lander, overrides, ids):
     study = read_lander(EXAMPLES / lander, overrides).spec.landings.study
-    return [read_scene(r.scene, r.overrides) for r in study.runs if r.run_id in ids]
+    cases = [read_scene(r.scene, r.overrides) for r in study.runs if r.run_id in ids]
+    assert len(cases) == len(ids)
+    return cases
 
 
 def _lands(cfg):
