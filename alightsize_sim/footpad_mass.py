@@ -60,6 +60,9 @@ from .vec3 import mv
 
 NB = 14            # body states before the footpads'
 FACE, STICK, SLIDE, BAND = -1, 0, 1, 2   # FACE: held on a vertical face it met (any friction model)
+STARTED = 3        # BAND, entered from STICK by a located slip start: it does not stick again before the step loop
+                   # has made a step longer than event_tol (landing_kernel), since the start is located up to
+                   # event_tol short of the static limit, where the push may still be within the dynamic one
 FLOOR = 1e-6       # N: in-plane force below this never starts a slide (round-off at zero load)
 LEAVE = 2.0        # a banded footpad slides at LEAVE x band, a sliding one enters the band at band (hysteresis:
                    # footpads at the band's edge, coupled through the capsule, cannot switch back and forth at once)
@@ -70,16 +73,22 @@ FOOT_TOL = 1e-4    # m: a footpad on soil whose event is located this near a roc
 
 RIGID, HELD, SINKING = -1.0, 0.0, 1.0     # soil modes of a footpad on the ground
 
-PadModel = namedtuple("PadModel", "mu_s mu_d mass band soil area diameter")
+PadModel = namedtuple("PadModel", "mu_s mu_d mass band soil area diameter held")
 """Static and dynamic friction, footpad mass (kg), Karnopp band (m/s), the soil (alightsize_sim.soil.Soil.packed
-as a tuple), the footpad's bearing area (m^2; 0: rigid ground, no soil) and diameter (m; round footpads)."""
+as a tuple), the footpad's bearing area (m^2; 0: rigid ground, no soil) and diameter (m; round footpads), and
+whether footpads are held in the plane (non-slip friction: they only sink)."""
 
 
-def pad_model(mu_s: float, mu_d: float, mass: float, band: float, soil=None, diameter: float = 0.0) -> PadModel:
-    """A PadModel of floats for round footpads of the given diameter; without a soil (None) the ground is rigid."""
+def pad_model(mu_s: float, mu_d: float, mass: float, band: float, soil=None, diameter: float = 0.0,
+              held: bool = False) -> PadModel:
+    """A PadModel of floats for round footpads of the given diameter; without a soil (None) the ground is rigid.
+    `held`: the friction is the report's non-slip device (landing.holds), so a footpad never slides in the plane,
+    as on rigid ground; it still sinks into the soil. A friction limit of 1e6 FE3 taken literally slides a footpad
+    only as its load FE3 passes through zero, where that limit's rate mu_D dFE3/du through the cells' dampers
+    makes the slide's band a stiff system (mu_D c / m ~ 2e9 1/s for the 1966 legs' 4,400 N s/m and 5 lb)."""
     packed = tuple(float(x) for x in soil.packed) if soil is not None else (0.0,) * 6
     d = float(diameter) if soil is not None else 0.0
-    return PadModel(float(mu_s), float(mu_d), float(mass), float(band), packed, np.pi * d * d / 4.0, d)
+    return PadModel(float(mu_s), float(mu_d), float(mass), float(band), packed, np.pi * d * d / 4.0, d, bool(held))
 
 
 def is_pad(mu) -> bool:
@@ -155,7 +164,9 @@ def pad_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, f
     if sliding == FACE:
         return sliding, power, alpha, beta, psi, 1.0, 0.0, 0.0, 1.0
     fe = mv(R, X[0], X[1], X[2])
-    if sliding == STICK:
+    if sliding == STICK and mu.held:
+        g = 1.0
+    elif sliding == STICK:
         load, p0, p1, p2 = _split(fe, nrm)
         g = mu.mu_s * max(load, 0.0) + _plow(mu, y, i, n) + FLOOR - np.sqrt(p0 * p0 + p1 * p1 + p2 * p2)  # eq. 33
     else:
@@ -338,7 +349,7 @@ def _switch(mu, y, i, P, sliding, down, Xt, R, terrain):
     if down:
         y[o], y[o + 1] = P[i, 0], P[i, 1]
         if sliding[i] != FACE:
-            sliding[i] = BAND
+            sliding[i] = STICK if mu.held else BAND
 
 
 @njit(cache=True)
@@ -419,11 +430,11 @@ def _start(mu, y, i, P, sliding, Xt, terrain):
 
 
 def _event(mu, y, i, P, sliding, Xt, terrain):
-    """STICK -> BAND (the static limit is passed: the footpad starts from rest); BAND -> SLIDE; SLIDE -> BAND,
+    """STICK -> BAND (STARTED: the static limit is passed, the footpad starts from rest); BAND -> SLIDE; SLIDE -> BAND,
     or STICK when the push is within the dynamic limit there."""
     if sliding[i] == STICK:
-        sliding[i] = BAND
-    elif sliding[i] == BAND:
+        sliding[i] = STARTED
+    elif sliding[i] == BAND or sliding[i] == STARTED:
         sliding[i] = SLIDE
     else:
         sliding[i] = BAND

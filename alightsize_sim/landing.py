@@ -181,7 +181,7 @@ class _Run:
             self.mu = None
         elif scene.footpad_mass > 0.0:
             self.mu = pad_model(scene.mu_static, scene.mu_dynamic, scene.footpad_mass, scene.footpad_band,
-                                scene.soil, scene.footpad_diameter)
+                                scene.soil, scene.footpad_diameter, holds(scene))
         else:
             self.mu = np.array([scene.mu_static, scene.mu_dynamic, min(max(1e-3 * ctl.rtol, 1e-13), 1e-8)])
         self.soil = scene.soil is not None

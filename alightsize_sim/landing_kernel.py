@@ -21,8 +21,9 @@ from numba import njit
 from . import crush_cell
 from .borrow import borrowed
 from .bundle import bundler
-from .footpad_mass import (FACE, FLOOR, ground_event, integrates_dampers, pad_event, pad_ground, pad_rates, pad_settle,
-                           pad_switch)
+from .footpad_mass import BAND as PAD_BAND
+from .footpad_mass import (FACE, FLOOR, STARTED, ground_event, integrates_dampers, pad_event, pad_ground, pad_rates,
+                           pad_settle, pad_switch)
 from .footpad_slip import contact_force, slides_by_position, slip_events
 from .rigid_body import free_flight, quat_matrix, quat_rate
 from .stability import hanging_margin, quiescence_momenta, quiescence_update, stable_by_energy, tipping_margins
@@ -809,10 +810,12 @@ def run(arrays, y, t, history, scratch):
         if stalled > MAX_STALL:
             return FAILED, t
         t += h_acc
-        if h_acc > ctl[C_EVENTTOL]:                    # a step past event_tol: legs that touched are no longer FRESH
-            for i in range(n):
+        if h_acc > ctl[C_EVENTTOL]:                    # a step past event_tol: legs that touched are no longer FRESH,
+            for i in range(n):                         # slides that started may stick again (footpad_mass.STARTED)
                 if armed[i] == FRESH:
                     armed[i] = 0
+                if sliding[i] == STARTED:
+                    sliding[i] = PAD_BAND
         _copy1(y, y1)
         qn = np.sqrt(y[6] ** 2 + y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
         for c in range(6, 10):

@@ -1,11 +1,20 @@
-"""Robustness sweep of the landing simulator: N seeded random landings about configuration 1
-(alightsize.landings.random_landings), each run to its outcome or t_final, on a process pool.
+"""Robustness sweep of the landing simulator: N seeded random landings, each run to its outcome or t_final, on a
+process pool.
 
-Reports the outcome counts, failures (must be none), the worst energy closure, and the wall time per landing
-and per simulated second. With --terrain each landing has one random step or rock within the leg span; with
---soil NAME (a shipped soil; needs --footpad-mass) the ground is that soil, under nominal 0.5 m footpads.
-Usage: python benchmarks/random_scenes.py [-n 1000] [--t-final 1.0] [--workers 2] [--terrain] [--footpad-mass KG]
-[--soil NAME] [--json FILE]
+With --mixed each landing draws its scene (alightsize.landings.random_landings): the leg kind and vehicle (the
+report's telescoping configuration 1, its articulated configuration 5, or the lunar example's telescoping legs),
+massless footpads or 1-50 kg ones 0.2-0.8 m across on rigid ground or a shipped soil, 0-2 rocks or steps within
+the leg span, gravity from 1e-6 m/s^2 to 1.5 g0, every cell's loading curve (3-6 points, some with a first point
+of 1e-9 N: free play), and non-slip friction in a fifth of the landings; then the slope, velocity, attitude,
+roll rate and friction of random_landing. A bottomed cell does not end these landings (its stiff ramp is part of
+what they test). Without it the sweep is about configuration 1: massless footpads on
+the plane, or one random step or rock within the leg span (--terrain), footpads of that mass (--footpad-mass),
+that shipped soil under nominal 0.5 m footpads (--soil, needs --footpad-mass).
+
+Reports the outcome counts (per kind in the mixed sweep), failures (must be none), the worst energy closure,
+and the wall time per landing and per simulated second.
+Usage: python benchmarks/random_scenes.py [-n 1000] [--t-final 1.0] [--workers 2] [--mixed | [--terrain]
+[--footpad-mass KG] [--soil NAME]] [--seed N] [--first K] [--json FILE]
 """
 
 from __future__ import annotations
@@ -16,30 +25,67 @@ import json
 import os
 import platform
 import time
-from collections import Counter
+from collections import Counter, defaultdict
 from concurrent.futures import ProcessPoolExecutor
+from functools import cache
 from pathlib import Path
 
 import numpy as np
 
-from alightsize.landings.random_landings import random_landing
-from alightsize.model.scene_config import read_scene
+from alightsize.landings.random_landings import mixed_overrides, random_landing, random_terrain
+from alightsize.model.scene_config import SceneConfig, read_scene
 from alightsize.model.soils import soil_presets
 from alightsize_sim.landing import simulate
 
-BASE = Path(__file__).resolve().parent.parent / "examples" / "affdl-tr-66-33" / "scenes" / "telescoping_config1.toml"
+ROOT = Path(__file__).resolve().parent.parent
+SCENES = ROOT / "examples" / "affdl-tr-66-33" / "scenes"
+BASE = SCENES / "telescoping_config1.toml"
+KINDS = {"telescoping_1966": BASE, "articulated_1966": SCENES / "articulated_config5.toml",
+         "telescoping_lunar": ROOT / "examples" / "lunar_lander.toml"}
 SEED = 20261121
 PAD_DIAMETER = 0.5                  # m: a nominal footpad (the report gives none for configuration 1)
+HELD_SHARE = 0.2                    # landings kept on non-slip friction (the report's 1.5e6 / 1.0e6)
 
 
-def one(k: int, t_final: float, features: bool = False, footpad_mass: float = 0.0, soil: str | None = None) -> dict:
-    base = read_scene(BASE)
-    scene = dataclasses.replace(random_landing(base.scene, SEED, k, features), footpad_mass=footpad_mass,
-                                soil=soil_presets()[soil] if soil else None, footpad_diameter=PAD_DIAMETER)
-    res = simulate(scene, dataclasses.replace(base.controls, t_final=t_final))
-    return {"k": k, "status": res.status, "t_end": float(res.t[-1]), "wall_s": res.wall_s, "steps": res.steps,
-            "rejected": res.rejected, "events": res.events, "closure_rel": res.energy["closure_rel"],
-            "finite": bool(np.isfinite(res.y).all())}
+@cache
+def _base(path: Path) -> SceneConfig:
+    return read_scene(path)
+
+
+def mixed(seed: int, k: int) -> tuple[str, SceneConfig, dict]:
+    """Landing k of the mixed sweep: (kind, scene config, the draws beyond random_landing's)."""
+    rng = np.random.default_rng([seed, k, 1])
+    kind = list(KINDS)[int(rng.integers(len(KINDS)))]
+    base = _base(KINDS[kind])
+    cells = {name: cell for names, leg in zip(base.cell_names, base.scene.legs) for name, cell in zip(names, leg.cells)}
+    over = mixed_overrides(rng, cells, tuple(soil_presets()))
+    cfg = read_scene(KINDS[kind], over)
+    scene = random_landing(cfg.scene, seed, k)
+    if rng.uniform() < HELD_SHARE:
+        scene = dataclasses.replace(scene, mu_static=1.5e6, mu_dynamic=1.0e6)
+    scene = dataclasses.replace(scene, terrain=random_terrain(rng, scene, int(rng.integers(3))))
+    return kind, dataclasses.replace(cfg, scene=scene), over
+
+
+def one(k: int, t_final: float, features: bool = False, footpad_mass: float = 0.0, soil: str | None = None,
+        former: bool = True, seed: int = SEED) -> dict:
+    if former:
+        base = _base(BASE)
+        kind, over = "telescoping_1966", {}
+        scene = dataclasses.replace(random_landing(base.scene, seed, k, features), footpad_mass=footpad_mass,
+                                    soil=soil_presets()[soil] if soil else None, footpad_diameter=PAD_DIAMETER)
+        controls = base.controls
+    else:
+        kind, cfg, over = mixed(seed, k)
+        scene, controls = cfg.scene, dataclasses.replace(cfg.controls, stop_on_bottoming=False)
+    res = simulate(scene, dataclasses.replace(controls, t_final=t_final))
+    return {"k": k, "kind": kind, "status": res.status, "t_end": float(res.t[-1]), "wall_s": res.wall_s,
+            "steps": res.steps, "rejected": res.rejected, "events": res.events,
+            "closure_rel": res.energy["closure_rel"], "finite": bool(np.isfinite(res.y).all()),
+            "soil": scene.soil.name if scene.soil else None, "footpad_mass": scene.footpad_mass,
+            "gravity": float(np.linalg.norm(scene.gravity)), "held": scene.mu_static >= 1e3,
+            "features": len(scene.terrain.steps) + len(scene.terrain.hemispheres) + len(scene.terrain.boxes),
+            "overrides": over}
 
 
 def main() -> None:
@@ -47,23 +93,40 @@ def main() -> None:
     ap.add_argument("-n", type=int, default=1000)
     ap.add_argument("--t-final", type=float, default=1.0)
     ap.add_argument("--workers", type=int, default=os.cpu_count())
+    ap.add_argument("--seed", type=int, default=SEED)
+    ap.add_argument("--first", type=int, default=0, help="index of the first landing (to split a sweep)")
     ap.add_argument("--json", type=Path)
-    ap.add_argument("--terrain", action="store_true", help="a random step or rock within the leg span in each")
+    ap.add_argument("--mixed", action="store_true", help="draw each landing's scene (kind, footpads, soil, terrain, "
+                    "gravity, cells)")
+    ap.add_argument("--terrain", action="store_true", help="a random step or rock within the leg span")
     ap.add_argument("--footpad-mass", type=float, default=0.0, help="footpad mass, kg (0: massless, the default)")
     ap.add_argument("--soil", help="a shipped soil under the footpads (needs --footpad-mass)")
     a = ap.parse_args()
-    one(0, 0.01, a.terrain, a.footpad_mass, a.soil)        # compile (cached) before timing
+    former = not a.mixed
+    if a.mixed and (a.terrain or a.footpad_mass or a.soil):
+        ap.error("--mixed draws the terrain, footpads and soil itself")
+    mass = a.footpad_mass
+    ks = range(a.first, a.first + a.n)
+    for kind in ([None] if former else KINDS):                 # compile (cached) before timing
+        k0 = next(k for k in range(100) if former or mixed(a.seed, k)[0] == kind)
+        one(k0, 0.01, a.terrain, mass, a.soil, former, a.seed)
     t0 = time.perf_counter()
     with ProcessPoolExecutor(a.workers) as pool:
-        runs = list(pool.map(one, range(a.n), [a.t_final] * a.n, [a.terrain] * a.n, [a.footpad_mass] * a.n,
-                             [a.soil] * a.n, chunksize=8))
+        n = len(ks)
+        runs = list(pool.map(one, ks, [a.t_final] * n, [a.terrain] * n, [mass] * n, [a.soil] * n, [former] * n,
+                             [a.seed] * n, chunksize=8))
     wall = time.perf_counter() - t0
     walls = np.array([r["wall_s"] for r in runs])
     sim_t = np.array([r["t_end"] for r in runs])
-    out = {"n": a.n, "t_final_s": a.t_final, "workers": a.workers, "terrain": a.terrain,
-           "footpad_mass_kg": a.footpad_mass, "soil": a.soil,
-           "machine": platform.processor() or platform.machine(),
+    by_kind: dict = defaultdict(Counter)
+    for r in runs:
+        by_kind[r["kind"]][r["status"]] += 1
+    out = {"n": a.n, "first": a.first, "seed": a.seed, "t_final_s": a.t_final, "workers": a.workers,
+           "sweep": "configuration 1" if former else "mixed", "terrain": a.terrain, "footpad_mass_kg": mass,
+           "soil": a.soil, "machine": platform.processor() or platform.machine(),
            "outcomes": dict(Counter(r["status"] for r in runs)),
+           "outcomes_by_kind": {k: dict(v) for k, v in sorted(by_kind.items())},
+           "on_soil": sum(r["soil"] is not None for r in runs),
            "failed": [r["k"] for r in runs if r["status"] == "failed" or not r["finite"]],
            "closure_rel_max": max(r["closure_rel"] for r in runs),
            "closure_worst_k": max(runs, key=lambda r: r["closure_rel"])["k"],
@@ -71,7 +134,8 @@ def main() -> None:
                                                          "p95": 1e3 * float(np.percentile(walls, 95)),
                                                          "max": 1e3 * float(walls.max())},
            "ms_per_simulated_s": 1e3 * float(walls.sum() / sim_t.sum()),
-           "slowest": sorted(runs, key=lambda r: -r["wall_s"])[:5]}
+           "slowest": [{k: v for k, v in r.items() if k != "overrides"}
+                       for r in sorted(runs, key=lambda r: -r["wall_s"])[:5]]}
     print(json.dumps(out, indent=1))
     if a.json:
         a.json.write_text(json.dumps({**out, "runs": runs}, indent=1))

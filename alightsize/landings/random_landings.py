@@ -1,7 +1,9 @@
 """Seeded random landings for robustness sweeps of the simulator: terrain slope (+-35 deg), horizontal and
 vertical velocity, inclination toward any azimuth, roll rate (0 or 3 rad/s) and friction (mu_D 0.3-1.2,
-mu_S = 1.5 mu_D) dispersed about a base scene. Landing k of a sweep depends only on (seed, k), never on the
-order or place it runs."""
+mu_S = 1.5 mu_D) dispersed about a base scene (`random_landing`); and, for a mixed sweep, the scene itself
+drawn about a base (`mixed_overrides`): footpad mass and diameter, the ground (rigid or a shipped soil), gravity
+and every cell's loading curve, with rocks and steps within the leg span (`random_terrain`). Landing k of a
+sweep depends only on (seed, k), never on the order or place it runs."""
 
 from __future__ import annotations
 
@@ -9,11 +11,16 @@ import dataclasses
 
 import numpy as np
 
+from alightsize_sim.crush_cell import CellModel
 from alightsize_sim.landing import Scene
 from alightsize_sim.rigid_body import axis_rotation, matrix_quat, quat_matrix
-from alightsize_sim.terrain import random_feature
+from alightsize_sim.terrain import Terrain, random_feature
 
 FT = 0.3048
+G0 = 9.80665
+G_LEAST = 1e-6          # m/s^2: the least gravity a scene takes (docs/reference/scene.md [scene] gravity)
+NEAR_DEGENERATE = 0.15  # the share of drawn curves whose first point carries next to nothing: 1e-9 to 1e-6 N
+LEAST_FORCE = 1e-9      # N: the least non-zero force an input takes (alightsize.common.units)
 
 
 def random_landing(base: Scene, seed: int, k: int, features: bool = False) -> Scene:
@@ -36,7 +43,58 @@ def random_landing(base: Scene, seed: int, k: int, features: bool = False) -> Sc
                                 mu_static=1.5 * mu_d)
     if not features:
         return scene
+    return dataclasses.replace(scene, terrain=random_terrain(rng, base, 1))
+
+
+def random_terrain(rng: np.random.Generator, base: Scene, count: int) -> Terrain:
+    """`count` steps or rocks (each as random_landing's feature) within the leg span of `base`, on one plane."""
     span = max(float(np.hypot(*leg.attach[:2])) for leg in base.legs) * 1.5
-    return dataclasses.replace(scene, terrain=random_feature(rng, span, step_height=(-2.0 * FT, 2.0 * FT),
-                                                             radius=(0.2 * FT, 2.0 * FT), box_size=(0.5 * FT, 4.0 * FT),
-                                                             box_height=(0.2 * FT, 2.0 * FT)))
+    parts = [random_feature(rng, span, step_height=(-2.0 * FT, 2.0 * FT), radius=(0.2 * FT, 2.0 * FT),
+                            box_size=(0.5 * FT, 4.0 * FT), box_height=(0.2 * FT, 2.0 * FT)) for _ in range(count)]
+    return Terrain(steps=sum((p.steps for p in parts), ()), hemispheres=sum((p.hemispheres for p in parts), ()),
+                   boxes=sum((p.boxes for p in parts), ()))
+
+
+def _q(x: float, unit: str) -> str:
+    """A TOML quantity, exact (the shortest repr of the float)."""
+    return f"{float(x)!r} {unit}"
+
+
+def random_curve(rng: np.random.Generator, cell: CellModel) -> dict:
+    """A cell table (TOML values, SI) about `cell`: 3 to 6 points over 0.5-1.5 x its stroke, a first point at
+    0.5-10 % of the stroke carrying 0.3-1 x the force level (or, in NEAR_DEGENERATE of the draws, 1e-9 to 1e-6 N:
+    a leg with free play), stages at 0.8-1.3 x the level (mostly rising, dips allowed), a last point at 1.5-3 x (the
+    bottoming ramp); level 0.5-1.5 x the cell's largest force short of its ramp; unloading rate 1-2 x the
+    steepest segment (or the cell's own rate if that is larger), the cell's damping."""
+    d, f = cell.curve.deflection, cell.curve.force
+    stroke = d[-1] * rng.uniform(0.5, 1.5)
+    level = max(f[:-1] if len(f) > 2 else f) * rng.uniform(0.5, 1.5)
+    m = int(rng.integers(3, 7))
+    first = stroke * rng.uniform(0.005, 0.1)
+    defl = [0.0, first, *np.sort(rng.uniform(first, stroke, m - 3)), stroke]
+    near = rng.uniform() < NEAR_DEGENERATE
+    onset = LEAST_FORCE * 10.0 ** rng.uniform(0.0, 3.0) if near else level * rng.uniform(0.3, 1.0)
+    force = [0.0, onset, *(level * rng.uniform(0.8, 1.3, m - 3)), level * rng.uniform(1.5, 3.0)]
+    slopes = [(b - a) / (y - x) for x, y, a, b in zip(defl, defl[1:], force, force[1:]) if y > x]
+    rate = max(max(slopes) * rng.uniform(1.0, 2.0), cell.k)
+    return {"deflection": [_q(x, "m") for x in defl], "force": [_q(x, "N") for x in force],
+            "unloading_rate": _q(rate, "N/m"), "damping": _q(cell.c, "N*s/m")}
+
+
+def mixed_overrides(rng: np.random.Generator, cells: dict[str, CellModel], soils: tuple[str, ...]) -> dict:
+    """Overrides of a base scene (dotted key -> TOML value) for a mixed sweep: footpads massless (a third of the
+    draws) or of 1-50 kg, 0.2-0.8 m across; with mass, rigid ground or one of `soils` (equally likely); gravity
+    log-uniform from G_LEAST to 1.5 g0; every cell of `cells` (name -> its model) redrawn (random_curve)."""
+    over: dict = {}
+    mass = 0.0 if rng.uniform() < 1.0 / 3.0 else rng.uniform(1.0, 50.0)
+    diameter = rng.uniform(0.2, 0.8)
+    ground = int(rng.integers(len(soils) + 1)) if mass > 0.0 else 0
+    over["legs.footpad_mass"] = _q(mass, "kg")
+    if ground:
+        over["legs.footpad_diameter"] = _q(diameter, "m")
+        over["terrain.soil"] = soils[ground - 1]
+    over["scene.gravity"] = _q(np.exp(rng.uniform(np.log(G_LEAST), np.log(1.5 * G0))), "m/s^2")
+    for name, cell in sorted(cells.items()):
+        for key, value in random_curve(rng, cell).items():
+            over[f"cells.{name}.{key}"] = value
+    return over
