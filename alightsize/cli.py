@@ -134,7 +134,7 @@ def _synthesize(args, stage: Stage) -> int:
     start = parse_start(spec, args.start)
     try:
         res = synthesize(spec, out, start, not args.no_trade, backend, workers,
-                         args.scheduler, log=lambda msg: print(msg, flush=True))
+                         args.scheduler, log=lambda msg: print(msg, flush=True), progress=True)
     except KeyboardInterrupt:
         print(f"alightsize: interrupted; every landing and candidate is stored in {out / 'runs.sqlite'}: "
               "run the same command again to resume", file=sys.stderr)

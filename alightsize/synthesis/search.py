@@ -135,9 +135,10 @@ def _best(history: list[tuple[int, Evaluation]]) -> Evaluation:
 
 def synthesize(path: str | Path | SynthesisSpec, out: str | Path, start: dict[str, float] | None = None,
                trade: bool = True, backend: str = "pool", workers: int | None = None, scheduler: str | None = None,
-               log: Callable[[str], None] = lambda s: None) -> SynthesisResult:
+               log: Callable[[str], None] = lambda s: None, progress: bool = False) -> SynthesisResult:
     """Search the lightest landing system of a lander file's `[synthesis]` (a path, or the spec already read;
-    resumable in `out`). `start` replaces free parameters' starting values (SI, by key)."""
+    resumable in `out`). `start` replaces free parameters' starting values (SI, by key); `progress` shows a bar
+    over each batch of landings on a terminal."""
     spec = path if isinstance(path, SynthesisSpec) else read_synthesis(path)
     out = Path(out)
     t0 = time.perf_counter()
@@ -148,7 +149,8 @@ def synthesize(path: str | Path | SynthesisSpec, out: str | Path, start: dict[st
             raise InputError("(start)", k, f"a start within [{p.show(p.low)}, {p.show(p.high)}]", p.show(v))
         x0[spec.free.index(p)] = v
     samples = {} if spec.budget.samples is None else {"requirements.monte_carlo.samples": spec.budget.samples}
-    ev = Evaluator(spec.path, spec.free, out, samples, backend, workers, scheduler, spec.stroke_margin, data=spec.data)
+    ev = Evaluator(spec.path, spec.free, out, samples, backend, workers, scheduler, spec.stroke_margin,
+                   quiet=not progress, data=spec.data)
     log(f"{spec.path.name}: {len(spec.free)} free parameters, up to {spec.budget.generations + 1} generations "
         f"of {spec.budget.population * len(spec.free)} candidates -> {out / 'runs.sqlite'}")
     history = search(ev, spec, spec.budget, x0, log)
@@ -172,7 +174,7 @@ def synthesize(path: str | Path | SynthesisSpec, out: str | Path, start: dict[st
             for value, label in values:
                 log(f"trade point {axis} = {label}")
                 tev = Evaluator(spec.path, spec.free, out, {**_trade_context(ev, axis, value), **_samples(spec)},
-                                backend, workers, scheduler, spec.stroke_margin, data=spec.data)
+                                backend, workers, scheduler, spec.stroke_margin, quiet=not progress, data=spec.data)
                 hist = search(tev, spec, spec.trade_budget, best.x, log)
                 result.trade[axis].append(TradePoint(axis, value, label, _best(hist)))
                 ev.computed += tev.computed
