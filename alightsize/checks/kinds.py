@@ -43,7 +43,7 @@ class Check:
     replaces: dict[str, str] = field(default_factory=dict)
 
     def evaluate(self, section: Section | None, material: Material) -> Outcome:
-        """The check at `section` (None: an item without one; a formula that needs it raises AttributeError)."""
+        """The check at `section` (None: an item without one; a formula that takes a size from it then raises)."""
         return KINDS[self.kind][1](self.params, section, material)
 
     def needs(self) -> tuple[str, ...]:
