@@ -15,7 +15,7 @@ from alightsize.checks.rules import RULES, DEFAULT_RULES, Rules
 from alightsize.common.config import Node
 from alightsize.common.trace import Step
 from alightsize.model.materials import Material
-from alightsize.model.sections import Section
+from alightsize.model.sections import Section, given
 from alightsize.common.units import fmt
 
 
@@ -42,7 +42,8 @@ class Check:
     note: str = ""
     replaces: dict[str, str] = field(default_factory=dict)
 
-    def evaluate(self, section: Section, material: Material) -> Outcome:
+    def evaluate(self, section: Section | None, material: Material) -> Outcome:
+        """The check at `section` (None: an item without one; a formula that takes a size from it then raises)."""
         return KINDS[self.kind][1](self.params, section, material)
 
     def needs(self) -> tuple[str, ...]:
@@ -200,8 +201,8 @@ def _direct_step(load: float, area: float, label: str = "Compressive stress", sy
                 stress.direct_stress(load, area), "stress")
 
 
-def _compression(p, s: Section, mat: Material, mode="compression", label="Compressive stress") -> Outcome:
-    step = _direct_step(p["P"], s.area(), label, "σ")
+def _compression(p, s: Section | None, mat: Material, mode="compression", label="Compressive stress") -> Outcome:
+    step = _direct_step(p["P"], given(s).area(), label, "σ")
     fy = mat.value("yield_strength")
     return Outcome(mode, p["P"], step.value, fy, stress.design_factor(fy, step.value), (step,))
 
@@ -528,7 +529,7 @@ def _center_points(p, edge: str, a: float, t: float, m: float) -> tuple[list[tup
     return points, steps
 
 
-def _plate_center(edge: str) -> Callable[[dict, Section, Material], Outcome]:
+def _plate_center(edge: str) -> Evaluator:
     def evaluate(p, s, mat) -> Outcome:
         bad = _plate_range(p, s)
         if bad:
@@ -641,7 +642,7 @@ def _plate_eccentric(p, s, mat) -> Outcome:
 
 # kind -> (reader of config parameters, evaluator, material properties it needs)
 Reader = Callable[[Node, Rules], dict]
-Evaluator = Callable[[dict, Section, Material], Outcome]
+Evaluator = Callable[[dict, Section | None, Material], Outcome]      # section None: an item without one
 KINDS: dict[str, tuple[Reader, Evaluator, tuple[str, ...]]] = {
     "compression": (_read_load, _compression, ("yield_strength",)),
     "tension": (_read_load, _tension, ("yield_strength",)),
@@ -698,11 +699,13 @@ def _length(x: float) -> str:
     return f"{fmt(x, 'length', 'US')} ({fmt(x, 'length', 'SI')})"
 
 
-def out_of_range(check: Check, section: Section, material: Material) -> tuple[str, str, str] | None:
+def out_of_range(check: Check, section: Section | None, material: Material) -> tuple[str, str, str] | None:
     """(key, expected, found) when a check's geometry leaves its formula's domain: a local-buckling wall of the
     tube's outside radius or more, or outside its formula's r/t range; a ring of R/c below 2; a plate outside
     its formula's range (_plate_range). A key "section.NAME" is the item section's own."""
     p = check.params
+    if section is None:                            # no geometry to range: the evaluation names what is missing
+        return None
     if check.kind == "local_buckling":
         r = section.outside_diameter / 2           # the section's own wall is checked where it is read
         if p["t"] is not None and p["t"] >= r:

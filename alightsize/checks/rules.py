@@ -12,6 +12,7 @@ check's own `formula`, `theory` or `equivalent_radius` key overrides its rule se
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Literal
 
 
 @dataclass(frozen=True)
@@ -25,4 +26,5 @@ class Rules:
 
 RULES = {"current": Rules("johnson_euler", "sp8007", "tresca", True, "thin_plate"),
          "app_iv": Rules("euler", "app_iv", "app_iv", False, "app_iv")}
-DEFAULT_RULES = "current"
+RuleSet = Literal["current", "app_iv"]          # the names of RULES, the type of a table's `rules` key
+DEFAULT_RULES: RuleSet = "current"

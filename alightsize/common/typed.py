@@ -61,9 +61,10 @@ def quantity(value: Any, dim: str, sign: Sign) -> float:
     return float(si)
 
 
-def Quantity(dim: str, sign: Sign = "positive"):  # noqa: N802 - a type
-    """A quantity with units ("3750 lbf"), validated to an SI float (angles in radians)."""
-    return Annotated[float, PlainValidator(lambda v: quantity(v, dim, sign))]
+def Quantity(dim: str, sign: Sign = "positive") -> PlainValidator:  # noqa: N802 - a type's validator
+    """A quantity with units ("3750 lbf"), validated to an SI float (angles in radians):
+    `Annotated[float, Quantity("length")]`."""
+    return PlainValidator(lambda v: quantity(v, dim, sign))
 
 
 def _number(value: Any, sign: Sign) -> float:
@@ -77,9 +78,9 @@ def _number(value: Any, sign: Sign) -> float:
     return float(value)
 
 
-def Number(sign: Sign = "positive"):  # noqa: N802 - a type
-    """A plain number (no unit) of a magnitude units.RANGES["dimensionless"] allows."""
-    return Annotated[float, PlainValidator(lambda v: _number(v, sign))]
+def Number(sign: Sign = "positive") -> PlainValidator:  # noqa: N802 - a type's validator
+    """A plain number (no unit) of a magnitude units.RANGES["dimensionless"] allows: `Annotated[float, Number()]`."""
+    return PlainValidator(lambda v: _number(v, sign))
 
 
 def _integer(value: Any, minimum: int, maximum: int) -> int:
@@ -88,9 +89,10 @@ def _integer(value: Any, minimum: int, maximum: int) -> int:
     return value
 
 
-def Integer(minimum: int = 1, maximum: int = 1_000_000):  # noqa: N802 - a type
-    """An integer from `minimum` to `maximum` (every count an input gives has a finite range)."""
-    return Annotated[int, PlainValidator(lambda v: _integer(v, minimum, maximum))]
+def Integer(minimum: int = 1, maximum: int = 1_000_000) -> PlainValidator:  # noqa: N802 - a type's validator
+    """An integer from `minimum` to `maximum` (every count an input gives has a finite range):
+    `Annotated[int, Integer(0, 12)]`."""
+    return PlainValidator(lambda v: _integer(v, minimum, maximum))
 
 
 _COUNT = {2: "two", 3: "three"}
@@ -110,9 +112,11 @@ def _quantities(value: Any, dim: str, sign: Sign, count: int | None, minimum: in
     return tuple(out)
 
 
-def Quantities(dim: str, sign: Sign = "any", count: int | None = None, minimum: int = 0):  # noqa: N802 - a type
-    """An array of quantities: `count` of them (a vector) or at least `minimum`."""
-    return Annotated[tuple[float, ...], PlainValidator(lambda v: _quantities(v, dim, sign, count, minimum))]
+def Quantities(dim: str, sign: Sign = "any", count: int | None = None,  # noqa: N802 - a type's validator
+               minimum: int = 0) -> PlainValidator:
+    """An array of quantities, `count` of them (a vector) or at least `minimum`:
+    `Annotated[tuple[float, ...], Quantities("length", count=3)]`."""
+    return PlainValidator(lambda v: _quantities(v, dim, sign, count, minimum))
 
 
 def Tagged(key: str, default: str | None, *members: type[Table]):  # noqa: N802 - a type

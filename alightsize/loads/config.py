@@ -41,7 +41,7 @@ def _name(value: Any) -> str:
 
 
 Name = Annotated[str, PlainValidator(_name)]       # a name of files and sheets
-Angle = Quantity("angle", "any")
+Angle = Annotated[float, Quantity("angle", "any")]
 
 
 class Span(Table):
@@ -51,7 +51,7 @@ class Span(Table):
     HIGH: ClassVar[float]
     start: Angle = Field(alias="from")
     to: Angle
-    step: Quantity("angle")
+    step: Annotated[float, Quantity("angle")]
 
     @model_validator(mode="after")
     def _within(self):
@@ -79,7 +79,7 @@ _GRID = default_grid()
 class GridTable(Table):
     alpha: AlphaSpan | None = None
     beta: BetaSpan | None = None
-    psi_step: Quantity("angle") = _GRID.psi_step
+    psi_step: Annotated[float, Quantity("angle")] = _GRID.psi_step
     bottomed: Literal["exclude", "include"] = "exclude"
 
     def grid(self) -> Grid:
@@ -96,9 +96,9 @@ class Configuration(Table):
     psi_final: Angle
     upper: CurveTable
     lower: CurveTable
-    length_scale: Number() = 1.0
-    return_spring_rate: Quantity("spring_rate", "nonnegative") | None = None
-    return_spring_preload: Quantity("force", "nonnegative") | None = None
+    length_scale: Annotated[float, Number()] = 1.0
+    return_spring_rate: Annotated[float, Quantity("spring_rate", "nonnegative")] | None = None
+    return_spring_preload: Annotated[float, Quantity("force", "nonnegative")] | None = None
 
     @model_validator(mode="after")
     def _psi(self):
@@ -125,12 +125,12 @@ class Combined(Table):
 class TelescopingTable(Table):
     """The App. III free body of the telescoping leg."""
 
-    axial_crush: Quantity("force")
-    rotational_crush: Quantity("force")
-    pad_lever: Quantity("length")
-    length: Quantity("length")
-    bearing_length: Quantity("length")
-    friction: Number("any")
+    axial_crush: Annotated[float, Quantity("force")]
+    rotational_crush: Annotated[float, Quantity("force")]
+    pad_lever: Annotated[float, Quantity("length")]
+    length: Annotated[float, Quantity("length")]
+    bearing_length: Annotated[float, Quantity("length")]
+    friction: Annotated[float, Number("any")]
     note: str = ""
 
     @model_validator(mode="after")

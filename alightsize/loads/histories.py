@@ -68,7 +68,8 @@ def leg_shapes(scene: Scene, res: Result) -> np.ndarray:
         for k in np.flatnonzero(res.contact[:, i] | np.r_[False, res.contact[:-1, i]]):
             if not res.contact[k, i]:                  # lifted off after step k - 1: FORCE's stored geometry (a
                 # telescoping leg's held compression only places its free footpad, not needed here)
-                shape = np.array(lift_shape(geo, cells, i, mem, *out[k - 1, i], 0.0, y[k - 1, 0:3], R[k - 1]))
+                alpha, beta, psi = out[k - 1, i]
+                shape = np.array(lift_shape(geo, cells, i, mem, alpha, beta, psi, 0.0, y[k - 1, 0:3], R[k - 1]))
                 continue
             out[k, i] = leg_force(geo, cells, i, mem, shape, res.footpad[k, i], y[k, 0:3], R[k],
                                   y[k, 3:6] - res.footpad_velocity[k, i], y[k, 10:13], defl, frc, rte, X)[1:]
@@ -100,11 +101,12 @@ class LegHistory:
 def leg_histories(scene: Scene, res: Result) -> tuple[LegHistory, ...]:
     """Shapes, forces and reactions of every articulated leg along the history (ValueError on telescoping
     legs)."""
-    if not all(isinstance(leg, ArticulatedLeg) for leg in scene.legs):
+    legs = [leg for leg in scene.legs if isinstance(leg, ArticulatedLeg)]
+    if len(legs) != len(scene.legs):
         raise ValueError("dynamic member loads need articulated legs (telescoping: App. III free body only)")
     shapes = leg_shapes(scene, res)
     out = []
-    for i, leg in enumerate(scene.legs):
+    for i, leg in enumerate(legs):
         g, k = leg.geometry, np.flatnonzero(res.contact[:, i])
         a, b, p = shapes[k, i].T
         ground = res.leg_force[k, i] @ leg.to_body        # S axes: the simulator writes X = L x (Sec. V.F, FORCE)
@@ -136,7 +138,7 @@ def _extremes(fields: dict[str, np.ndarray], where) -> list[dict]:
     `where(step, leg)`; None where a field never has that sign. Ties go to the earliest step, then leg."""
     rows = []
     for m, f in fields.items():
-        row = {"member": m}
+        row: dict[str, object] = {"member": m}
         for key, pick, sign in (("tension", np.nanargmax, 1.0), ("compression", np.nanargmin, -1.0)):
             if (np.isfinite(f) & (sign * f > 0)).any():
                 k, i = np.unravel_index(int(pick(f)), f.shape)
@@ -168,8 +170,8 @@ def telescoping_member_histories(cfg: SceneConfig, res: Result, leg: Telescoping
     over the current length al, eq. 25-27), P2 = P1 (al / a - 1) (the pads' resultant P1 al / a less P1, from
     the moments about the pivot; App. III with al = rho), and w1, w2, P4, P3 of `sliding_loads` with the step's
     AF1 and al. Bearing length and friction are the App. III leg's (`leg`)."""
-    legs = cfg.scene.legs
-    if not all(isinstance(lg, SimTelescopingLeg) for lg in legs):
+    legs = [lg for lg in cfg.scene.legs if isinstance(lg, SimTelescopingLeg)]
+    if len(legs) != len(cfg.scene.legs):
         raise ValueError("telescoping member loads need telescoping legs")
     shape = res.contact.shape
     out = {m: np.full(shape, np.nan) for m in TELESCOPING_FORCES}

@@ -118,8 +118,8 @@ def pick(res: LoadsResult, env: str, member: str, sense: str) -> Extreme | None:
     row = next(r for r in res.envelopes[env] if r.member == member)
     cands = {"tension": [row.tension], "compression": [row.compression],
              "magnitude": [row.tension, row.compression]}[sense]
-    cands = [e for e in cands if e is not None]
-    return max(cands, key=lambda e: abs(e.value)) if cands else None
+    present = [e for e in cands if e is not None]
+    return max(present, key=lambda e: abs(e.value)) if present else None
 
 
 def _reference(node: Node, name: str, ref: dict, envelopes: tuple[str, ...],
@@ -150,6 +150,7 @@ def _reference(node: Node, name: str, ref: dict, envelopes: tuple[str, ...],
 def _resolve(res: LoadsResult, node: Node, name: str, ref: dict) -> float:
     sub, env, member, sense, factor = _reference(node, name, ref, tuple(res.envelopes), res.telescoping is not None)
     if env == TELESCOPING:
+        assert res.telescoping is not None          # `_reference` refuses it without a [telescoping] table
         value, extreme = abs(res.telescoping[member]) * factor, (res.telescoping_from or {}).get(member)
     else:
         extreme = pick(res, env, member, sense)

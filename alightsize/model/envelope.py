@@ -33,6 +33,7 @@ def _element(value: Any, dim: str, key: str) -> float:
     try:
         return quantity(value, dim, "any")
     except PydanticCustomError as exc:
+        assert exc.context is not None              # `refuse` sets it
         raise refuse(exc.context["expected"], _describe(value), key) from None
 
 
@@ -54,12 +55,12 @@ def _signed(value: Any, limit: float) -> Pair:
     return lo, hi
 
 
-def Range(dim: str):  # noqa: N802 - a type
-    return Annotated[Pair, PlainValidator(lambda v: _range(v, dim))]
+def Range(dim: str) -> PlainValidator:  # noqa: N802 - a type's validator: Annotated[Pair, Range("velocity")]
+    return PlainValidator(lambda v: _range(v, dim))
 
 
-def Signed(limit: float):  # noqa: N802 - a type
-    return Annotated[Pair, PlainValidator(lambda v: _signed(v, limit))]
+def Signed(limit: float) -> PlainValidator:  # noqa: N802 - a type's validator: Annotated[Pair, Signed(pi)]
+    return PlainValidator(lambda v: _signed(v, limit))
 
 
 class Envelope(Table):
@@ -67,13 +68,13 @@ class Envelope(Table):
     velocity heads into the slope) and inclination (positive: leaning toward the velocity); the Monte Carlo's
     heading range; largest roll rate (either sign); footpad friction range (None: the scene's terrain)."""
 
-    vertical_speed: Range("velocity")
-    horizontal_speed: Range("velocity") = (0.0, 0.0)
-    slope: Signed(pi / 2) = (0.0, 0.0)
-    inclination: Signed(pi) = (0.0, 0.0)
-    heading: Signed(2 * pi) = (-pi, pi)
-    roll_rate: Quantity("angular_velocity", "any") = 0.0
-    friction: Range("dimensionless") | None = None
+    vertical_speed: Annotated[Pair, Range("velocity")]
+    horizontal_speed: Annotated[Pair, Range("velocity")] = (0.0, 0.0)
+    slope: Annotated[Pair, Signed(pi / 2)] = (0.0, 0.0)
+    inclination: Annotated[Pair, Signed(pi)] = (0.0, 0.0)
+    heading: Annotated[Pair, Signed(2 * pi)] = (-pi, pi)
+    roll_rate: Annotated[float, Quantity("angular_velocity", "any")] = 0.0
+    friction: Annotated[Pair, Range("dimensionless")] | None = None
     note: str = ""
 
     @model_validator(mode="after")

@@ -4,6 +4,7 @@ truss angles. Read and validated at the boundary; SI inside."""
 from __future__ import annotations
 
 from math import radians
+from typing import Annotated
 
 import numpy as np
 
@@ -18,16 +19,16 @@ from alightsize.common.typed import Number, Quantities, Quantity, Table, refuse
 LENGTHS = ("AU", "AD", "AS", "AL", "AO", "AE", "AA", "AB", "AG", "AH", "AP", "AQ")
 
 
-Length = Quantity("length")
-LengthSigned = Quantity("length", "any")
+Length = Annotated[float, Quantity("length")]
+LengthSigned = Annotated[float, Quantity("length", "any")]
 
 
 class CurveTable(Table):
     """A crush cell's loading curve: force against deflection through the points given (Fig. 19)."""
 
-    deflection: Quantities("length", minimum=2)
-    force: Quantities("force", minimum=2)
-    factor: Number() = 1.0
+    deflection: Annotated[tuple[float, ...], Quantities("length", minimum=2)]
+    force: Annotated[tuple[float, ...], Quantities("force", minimum=2)]
+    factor: Annotated[float, Number()] = 1.0
     note: str = ""
 
     @model_validator(mode="after")
@@ -60,9 +61,9 @@ class GeometryTable(Table):
     AH: LengthSigned = 0.0
     AP: LengthSigned = 0.0
     AQ: LengthSigned = 0.0
-    PHI: Quantity("angle", "any") = 0.0
-    return_spring_rate: Quantity("spring_rate", "any") = 0.0
-    return_spring_preload: Quantity("force", "any") = 0.0
+    PHI: Annotated[float, Quantity("angle", "any")] = 0.0
+    return_spring_rate: Annotated[float, Quantity("spring_rate", "any")] = 0.0
+    return_spring_preload: Annotated[float, Quantity("force", "any")] = 0.0
     note: str = ""
 
     @model_validator(mode="after")
@@ -80,9 +81,9 @@ class GeometryTable(Table):
 class TrussTable(Table):
     """The parallelogram truss's member angles (Fig. 104-105)."""
 
-    theta: Quantity("angle")
-    gamma: Quantity("angle")
-    rho: Quantity("angle")
+    theta: Annotated[float, Quantity("angle")]
+    gamma: Annotated[float, Quantity("angle")]
+    rho: Annotated[float, Quantity("angle")]
     note: str = ""
 
     @model_validator(mode="after")

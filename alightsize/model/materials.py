@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Annotated
 
 from pydantic import model_validator
 
@@ -41,12 +42,12 @@ class MaterialFile(Table):
     """A material file (docs/reference/materials.md)."""
 
     name: str
-    density: Quantity("density")
-    yield_strength: Quantity("stress") | None = None
-    elastic_modulus: Quantity("stress") | None = None
-    poisson_m: Number() | None = None
-    crush_strength: Quantity("stress") | None = None
-    stroke_fraction: Number() | None = None
+    density: Annotated[float, Quantity("density")]
+    yield_strength: Annotated[float, Quantity("stress")] | None = None
+    elastic_modulus: Annotated[float, Quantity("stress")] | None = None
+    poisson_m: Annotated[float, Number()] | None = None
+    crush_strength: Annotated[float, Quantity("stress")] | None = None
+    stroke_fraction: Annotated[float, Number()] | None = None
     source: dict[str, str] = {}
 
     @model_validator(mode="after")

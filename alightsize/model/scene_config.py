@@ -12,7 +12,7 @@ from __future__ import annotations
 import copy
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Annotated, Any, Literal
+from typing import TYPE_CHECKING, Annotated, Any, Literal
 
 import numpy as np
 from pydantic import PlainValidator, ValidationInfo, field_validator, model_validator
@@ -87,8 +87,10 @@ def _inclination_attitude(roll: float, theta: float, azimuth: float) -> tuple[fl
 
 
 
-Length, LengthSigned, Angle = Quantity("length"), Quantity("length", "any"), Quantity("angle", "any")
-Time = Quantity("time")
+Length = Annotated[float, Quantity("length")]
+LengthSigned = Annotated[float, Quantity("length", "any")]
+Angle = Annotated[float, Quantity("angle", "any")]
+Time = Annotated[float, Quantity("time")]
 
 
 @dataclass(frozen=True)
@@ -125,10 +127,10 @@ def _inertia(value: Any) -> np.ndarray:
 
 
 class Capsule(Table):
-    weight: Quantity("force") | None = None
-    mass: Quantity("mass") | None = None
+    weight: Annotated[float, Quantity("force")] | None = None
+    mass: Annotated[float, Quantity("mass")] | None = None
     inertia: Annotated[np.ndarray, PlainValidator(_inertia)]
-    cg: Quantities("length", count=3) = (0.0, 0.0, 0.0)
+    cg: Annotated[tuple[float, ...], Quantities("length", count=3)] = (0.0, 0.0, 0.0)
     bottom: Length | None = None
     note: str = ""
 
@@ -140,9 +142,9 @@ class Capsule(Table):
 
 
 class Cell(CurveTable):
-    unloading_rate: Quantity("spring_rate")
-    damping: Quantity("damping", "any") = 0.0
-    yield_force: Quantity("force") | None = None
+    unloading_rate: Annotated[float, Quantity("spring_rate")]
+    damping: Annotated[float, Quantity("damping", "any")] = 0.0
+    yield_force: Annotated[float, Quantity("force")] | None = None
 
     @model_validator(mode="after")
     def _damping(self):
@@ -168,13 +170,13 @@ def _factors(value: Any) -> tuple[tuple[float, ...], ...]:
 class Legs(Table):
     """A pattern of identical legs around the roll axis: count, radius, height, first azimuth."""
 
-    count: Integer(2)
+    count: Annotated[int, Integer(2)]
     radius: Length
     height: LengthSigned
     first_azimuth: Angle = 0.0
     cell_factors: Annotated[tuple, PlainValidator(_factors)] | None = None
-    footpad_mass: Quantity("mass", "any") = 0.0
-    footpad_band: Quantity("velocity") = Scene.footpad_band
+    footpad_mass: Annotated[float, Quantity("mass", "any")] = 0.0
+    footpad_band: Annotated[float, Quantity("velocity")] = Scene.footpad_band
     footpad_diameter: Length = 0.0
     note: str = ""
 
@@ -205,7 +207,7 @@ class TelescopingLegs(Legs):
     kind: Literal["telescoping"] = "telescoping"
     length: Length
     pad_lever: LengthSigned = 0.0
-    pad_angles: Quantities("angle") = ()
+    pad_angles: Annotated[tuple[float, ...], Quantities("angle")] = ()
     axial: str
     pads: str = ""
     small_angle: bool = False
@@ -224,7 +226,7 @@ class ArticulatedLegs(Legs):
 
     kind: Literal["articulated"]
     geometry: GeometryTable
-    length_scale: Number() = 1.0
+    length_scale: Annotated[float, Number()] = 1.0
     psi_initial: Angle
     upper: str
     lower: str
@@ -265,17 +267,23 @@ class BoxRock(Table):
 
 class HeightFieldTable(Table):
     file: str
-    spacing: Quantities("length", "positive", count=2)
-    origin: Quantities("length", count=2) = (0.0, 0.0)
+    spacing: Annotated[tuple[float, ...], Quantities("length", "positive", count=2)]
+    origin: Annotated[tuple[float, ...], Quantities("length", count=2)] = (0.0, 0.0)
     note: str = ""
+
+
+if TYPE_CHECKING:        # a discriminated union pydantic builds at run time; mypy sees the plain union
+    Rock = HemisphereRock | BoxRock
+else:
+    Rock = Tagged("shape", None, HemisphereRock, BoxRock)
 
 
 class TerrainTable(Table):
     slope: Angle = 0.0
-    mu_static: Number("any") = 1.5e6
-    mu_dynamic: Number("any") = 1.0e6
+    mu_static: Annotated[float, Number("any")] = 1.5e6
+    mu_dynamic: Annotated[float, Number("any")] = 1.0e6
     steps: list[TerrainStep] = []
-    rocks: list[Tagged("shape", None, HemisphereRock, BoxRock)] = []
+    rocks: list[Rock] = []
     height_field: HeightFieldTable | None = None
     soil: str | None = None
     note: str = ""
@@ -293,20 +301,21 @@ class TerrainTable(Table):
 
 
 class Initial(Table):
-    velocity: Quantities("velocity", count=3)
+    velocity: Annotated[tuple[float, ...], Quantities("velocity", count=3)]
     heading: Angle | None = None
     roll: Angle = 0.0
     yaw: Angle | None = None
     pitch: Angle | None = None
     inclination: Angle | None = None
     inclination_azimuth: Angle | None = None
-    rates: Quantities("angular_velocity", count=3) = (0.0, 0.0, 0.0)
+    rates: Annotated[tuple[float, ...], Quantities("angular_velocity", count=3)] = (0.0, 0.0, 0.0)
     note: str = ""
 
     @field_validator("velocity", mode="wrap")
     @classmethod
     def _upward(cls, value: Any, handler, info: ValidationInfo):
         si = handler(value)
+        assert info.context is not None             # `validate` passes the file
         if si[2] > 0:                                   # legal (a rebound, a hop), but more likely a sign slip
             warn_input(info.context["file"], "initial.velocity[2]", f"an upward initial velocity, V3 = {value[2]} "
                        "(kappa-3 is up, a descent is negative): the capsule rises before it lands; simulated as given")
@@ -330,13 +339,13 @@ _D = Controls()
 
 class ControlsTable(Table):
     t_final: Time = _D.t_final
-    rtol: Number() = _D.rtol
-    atol: Number() = _D.atol
+    rtol: Annotated[float, Number()] = _D.rtol
+    atol: Annotated[float, Number()] = _D.atol
     fixed_step: Time | None = None
     max_step: Time = _D.max_step
     event_tol: Time = _D.event_tol
-    tip_angle: Quantity("angle") = _D.tip_angle
-    taus: Number("any") = 0.0
+    tip_angle: Annotated[float, Quantity("angle")] = _D.tip_angle
+    taus: Annotated[float, Number("any")] = 0.0
     stop_on_bottoming: bool = True
     energy_criterion_from: Annotated[float | None, PlainValidator(_energy_from)] = 0.05
     closed_form_flight: bool = True
@@ -358,7 +367,7 @@ class ControlsTable(Table):
 
 class OutputTable(Table):
     interval: Time | None = None
-    srs_damping: Number() = 0.05
+    srs_damping: Annotated[float, Number()] = 0.05
 
     @model_validator(mode="after")
     def _damping(self):
@@ -367,13 +376,19 @@ class OutputTable(Table):
         return self
 
 
+if TYPE_CHECKING:        # as Rock
+    AnyLegs = TelescopingLegs | ArticulatedLegs
+else:
+    AnyLegs = Tagged("kind", "telescoping", TelescopingLegs, ArticulatedLegs)
+
+
 class SceneFile(Table):
     """A scene file (docs/reference/scene.md): one landing."""
 
     scene: SceneHead = SceneHead()
     capsule: Capsule
     cells: dict[str, Cell]
-    legs: Tagged("kind", "telescoping", TelescopingLegs, ArticulatedLegs)
+    legs: AnyLegs
     terrain: TerrainTable = TerrainTable()
     initial: Initial
     controls: ControlsTable = ControlsTable()
@@ -471,6 +486,7 @@ def build_scene(path: Path, f: SceneFile) -> SceneConfig:
     file = str(path)
     cap = f.capsule
     mass = cap.weight / G0 if cap.weight is not None else cap.mass
+    assert mass is not None                     # Capsule._mass: exactly one of weight and mass
     moments, to_geo = principal_axes(cap.inertia)
     if not np.all(moments > 0):
         raise InputError(file, "capsule.inertia", "a positive definite tensor", f"principal moments {moments}")

@@ -89,6 +89,14 @@ _DERIVED = {
 OVERRIDE_TOLERANCE = 0.10
 
 
+def given(section: Section | None) -> Section:
+    """An item's section where a formula takes a size from it: KeyError "section" when the item has none (as a
+    missing dimension raises KeyError naming it)."""
+    if section is None:
+        raise KeyError("section")
+    return section
+
+
 def geometry_error(section: Section) -> tuple[str, str] | None:
     """(dimension, expected) when the dimensions describe no real section: a tube wall of half its outside
     diameter or more (no bore: A = pi d t and I = pi r^3 t would be taken on a mean diameter below the wall),

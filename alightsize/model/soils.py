@@ -39,20 +39,20 @@ def _soil_value(value: Any, key: str) -> float:
     return si
 
 
-def SoilValue(key: str):  # noqa: N802 - a type
-    return Annotated[float, PlainValidator(lambda v: _soil_value(v, key))]
+def SoilValue(key: str) -> PlainValidator:  # noqa: N802 - a type's validator: Annotated[float, SoilValue("c")]
+    return PlainValidator(lambda v: _soil_value(v, key))
 
 
 class SoilFile(Table):
     """A soil file (docs/soil.md): Bekker's n, k_c, k_phi and the Mohr-Coulomb c, phi, with the unit weight."""
 
     name: str
-    n: Number("any")
-    k_c: SoilValue("k_c")
-    k_phi: SoilValue("k_phi")
-    c: SoilValue("c")
-    phi: Quantity("angle", "any")
-    gamma: SoilValue("gamma")
+    n: Annotated[float, Number("any")]
+    k_c: Annotated[float, SoilValue("k_c")]
+    k_phi: Annotated[float, SoilValue("k_phi")]
+    c: Annotated[float, SoilValue("c")]
+    phi: Annotated[float, Quantity("angle", "any")]
+    gamma: Annotated[float, SoilValue("gamma")]
     source: dict[str, str] = {}
 
     @model_validator(mode="after")

@@ -6,19 +6,19 @@ from __future__ import annotations
 import copy
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Literal
+from typing import Annotated, Literal
 
 from alightsize.common.config import Node, is_file, load_toml
 from alightsize.common.errors import InputError
 from alightsize.common.typed import Integer, Quantity, Table, validate
-from alightsize.checks.rules import DEFAULT_RULES, RULES
+from alightsize.checks.rules import DEFAULT_RULES, RULES, RuleSet
 from alightsize.loads.config import LoadsConfig, read_loads
 from alightsize.loads.quasi_static import LoadReference, LoadsResult, attach, run_loads, validate_references
 from alightsize.model.materials import Material, library, material_paths
 from alightsize.pipeline.items import Item, RequiredFactor, read_item
 from alightsize.pipeline.landings import Landings, LandingSpec, LandingsTable, landed, landing_spec, run_landings
 
-UNIT_SYSTEMS = ("US", "SI")
+UnitSystem = Literal["US", "SI"]
 
 
 @dataclass(frozen=True)
@@ -76,18 +76,18 @@ def read_items(nodes: tuple[Node, ...], mats: dict[str, Material], required: flo
 class DesignHead(Table):
     configuration: str
     title: str | None = None
-    capsule_mass: Quantity("mass") | None = None
-    legs: Integer(1) = 4
-    rules: Literal[tuple(RULES)] = DEFAULT_RULES
+    capsule_mass: Annotated[float, Quantity("mass")] | None = None
+    legs: Annotated[int, Integer(1)] = 4
+    rules: RuleSet = DEFAULT_RULES
     materials: list[str] = []
 
 
 class DesignReport(Table):
-    units: Literal[UNIT_SYSTEMS] = "US"
+    units: UnitSystem = "US"
 
 
 class Audit(RequiredFactor):
-    decimals: Integer(0, 12) | None = None
+    decimals: Annotated[int, Integer(0, 12)] | None = None
 
 
 class LoadsFileRef(Table):
@@ -139,6 +139,7 @@ def prepare(spec: DesignSpec, landings_dir: Path | None = None, progress: bool =
     loads = run_loads(spec.loads) if spec.loads is not None else None
     landings = None
     if spec.landings is not None:
+        assert loads is not None                    # landing cases come with their loads (landing_spec, read_lander)
         loads, landings = (landed(spec.landings, loads, rows) if rows is not None
                            else run_landings(spec.landings, loads, landings_dir, progress))
     root = Node(spec.path, "", {})

@@ -132,8 +132,10 @@ class DesignResult:
             else:
                 parts.append(f"all {n} landings meet their criteria")
         if not self.weight_ok:
-            parts.append(f"the leg system weighs {100 * self.weight_fraction:.2f} % of the capsule, over its goal of "
-                         f"{100 * self.config.weight_goal:.2f} %")
+            frac, goal = self.weight_fraction, self.config.weight_goal
+            assert frac is not None and goal is not None      # `weight_ok` holds without either
+            parts.append(f"the leg system weighs {100 * frac:.2f} % of the capsule, over its goal of "
+                         f"{100 * goal:.2f} %")
         return ("PASS: " if self.ok else "FAIL: ") + "; ".join(parts)
 
     @property
@@ -189,19 +191,20 @@ def run_design(cfg: DesignConfig | DesignSpec, landings_dir=None, progress: bool
     (envelopes, landings into `landings_dir` or from their stored `rows`, loads resolved)."""
     if isinstance(cfg, DesignSpec):
         cfg = prepare(cfg, landings_dir, progress, rows)
-    sizings, items = [], []
+    sizings, judged = [], []
     for item in cfg.items:
         if size and item.size is not None:
+            assert item.section is not None          # `_read_size` refuses a size without a section
             s = size_item(item)
             sizings.append(s)
             item = item.with_section(item.section.with_dim(s.dimension, s.sized))
-        items.append(item)
-    items = tuple(items)
+        judged.append(item)
+    items = tuple(judged)
     records = run_audit(cfg, items)
     weights = []
     for item in items:
         w = item.weight_each()
-        if w is not None:
+        if w is not None and item.weight is not None:       # an item with a weight entry has a weight
             weights.append(WeightRow(item.weight.label or item.name, item, item.count, w[0], tuple(w[1])))
     return DesignResult(cfg, items, records, sizings, weights)
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 from math import inf
+from typing import Annotated
 
 from alightsize.common import units
 from alightsize.checks.kinds import Check, Outcome, out_of_range, read_check
@@ -13,6 +14,7 @@ from pydantic import model_validator
 from alightsize.common.config import Node
 from alightsize.common.typed import Number, Table, refuse, validate
 from alightsize.common.errors import InputError
+from alightsize.common.trace import Step
 from alightsize.loads.quasi_static import Unloaded
 from alightsize.model.materials import Material, lookup, require
 from alightsize.model.sections import SHAPES, Section, geometry_error, read_section
@@ -48,7 +50,7 @@ class Item:
     def governing_factor(self, section: Section | None = None) -> float:
         return min((o.factor for o in self.evaluate(section)), default=inf)
 
-    def weight_each(self, section: Section | None = None):
+    def weight_each(self, section: Section | None = None) -> tuple[float, list[Step]] | None:
         """(kg, steps) or None when the item has no weight entry."""
         if self.weight is None:
             return None
@@ -95,7 +97,7 @@ class RequiredFactor(Table):
     `allow_below_one = true` beside it (below 1 a member passes at stresses above its allowable, so the override
     is explicit and the report names it)."""
 
-    required_design_factor: Number() | None = None
+    required_design_factor: Annotated[float, Number()] | None = None
     allow_below_one: bool = False
 
     @model_validator(mode="after")
@@ -125,7 +127,7 @@ def read_item(node: Node, materials: dict[str, Material], required_default: floa
     sec_node = node.table("section", optional=True)
     section = read_section(sec_node) if sec_node else None
     length = node.quantity("length", "length", default=None)
-    checks = []
+    read: list[Check] = []
     for c in node.tables("check", optional=True, label="kind"):
         try:
             check = read_check(c, rules)
@@ -135,8 +137,8 @@ def read_item(node: Node, materials: dict[str, Material], required_default: floa
             lug = lookup(materials, c)
             require(lug, "yield_strength", InputError(c.file, c.key("material"), "", ""))
             check = replace(check, params={**check.params, "material": lug})
-        checks.append(check)
-    checks = tuple(checks)
+        read.append(check)
+    checks = tuple(read)
     required = read_required(node, required_default)
     w_node = node.table("weight", optional=True)
     weight = read_weight(w_node, materials) if w_node else None
@@ -170,17 +172,20 @@ def _validate(item: Item, node: Node) -> None:
         except (ValueError, ZeroDivisionError) as exc:
             raise InputError(node.file, check.where, "geometry for which the formula is defined", str(exc)) from None
 
-    for value in (item.size.low, item.size.high) if item.size else ():      # sizes stay in every formula's range
-        for check in item.checks:
-            bad = out_of_range(check, item.section.with_dim(item.size.dimension, value), item.material)
-            if bad:
-                raise InputError(node.file, node.key("size"), f"a size range keeping {check.where} in its formula's "
-                                 f"range: {bad[1]}",
-                                 f"{item.size.dimension} {units.fmt(value, 'length', 'US')}: {bad[2]}")
+    size, section = item.size, item.section
+    if size is not None:
+        assert section is not None                  # `_read_size` refuses a size without a section
+        for value in (size.low, size.high):         # sizes stay in every formula's range
+            for check in item.checks:
+                bad = out_of_range(check, section.with_dim(size.dimension, value), item.material)
+                if bad:
+                    raise InputError(node.file, node.key("size"), f"a size range keeping {check.where} in its "
+                                     f"formula's range: {bad[1]}",
+                                     f"{size.dimension} {units.fmt(value, 'length', 'US')}: {bad[2]}")
 
     if item.weight is not None:
         try:
-            w, _ = item.weight_each()
+            w, _ = item.weight.evaluate(item.section, item.material, item.length)
         except (KeyError, AttributeError, TypeError) as exc:
             raise InputError(node.file, item.weight.where, "the sizes this weight method needs (given here or in the "
                              "item's [section] and length)", f"missing {exc}") from None

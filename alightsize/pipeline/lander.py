@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from functools import partial
 from math import degrees, radians
 from pathlib import Path
-from typing import Any, Literal
+from typing import Annotated, Any
 
 from pydantic import ValidationInfo, model_validator
 
@@ -43,9 +43,9 @@ from alightsize.model.gravity import Gravity
 from alightsize.model.legs import TrussTable
 from alightsize.model.scene_config import (Cell, SceneConfig, SceneDocument, SceneFile, TelescopingLegs,
                                            build_scene, lander_scene)
-from alightsize.pipeline.config import UNIT_SYSTEMS, DesignSpec, read_design, read_items
+from alightsize.pipeline.config import DesignSpec, UnitSystem, read_design, read_items
 from alightsize.pipeline.landings import LandingSpec
-from alightsize.checks.rules import DEFAULT_RULES, RULES
+from alightsize.checks.rules import DEFAULT_RULES, RuleSet
 from alightsize.pipeline.items import RequiredFactor
 from alightsize.pipeline.members import member_item
 
@@ -55,17 +55,17 @@ DEFAULT_SAMPLES = 100                # Monte Carlo landings: about a minute on 2
 
 
 class MonteCarlo(Table):
-    samples: Integer(0, 100_000) = DEFAULT_SAMPLES
-    seed: Integer(0, SEED_MAX) = 1
-    cell_scatter: Number("nonnegative") = 0.0
+    samples: Annotated[int, Integer(0, 100_000)] = DEFAULT_SAMPLES
+    seed: Annotated[int, Integer(0, SEED_MAX)] = 1
+    cell_scatter: Annotated[float, Number("nonnegative")] = 0.0
     note: str = ""
 
 
 class Requirements(RequiredFactor):
     """`[requirements]`: the design factor members must reach, the landing criteria and the impact envelope."""
 
-    decimals: Integer(0, 12) | None = None
-    weight_goal: Number() | None = None
+    decimals: Annotated[int, Integer(0, 12)] | None = None
+    weight_goal: Annotated[float, Number()] | None = None
     criteria: CriteriaTable = CriteriaTable()
     envelope: Envelope
     monte_carlo: MonteCarlo = MonteCarlo()
@@ -87,13 +87,13 @@ class LanderHead(Table):
     name: Name | None = None
     title: str | None = None
     gravity: Gravity = G0
-    rules: Literal[tuple(RULES)] = DEFAULT_RULES
+    rules: RuleSet = DEFAULT_RULES
     materials: list[str] = []
     note: str = ""
 
 
 class ReportTable(Table):
-    units: Literal[UNIT_SYSTEMS] = "SI"
+    units: UnitSystem = "SI"
 
 
 class LanderFile(Table):
@@ -128,7 +128,9 @@ class Lander:
 
     @property
     def study(self) -> Study:
-        return self.spec.landings.study
+        landings = self.spec.landings
+        assert landings is not None                 # `read_lander` gives a lander's design its landing cases
+        return landings.study
 
 
 def _q(x: float, unit: str) -> str:
@@ -170,11 +172,11 @@ def landing_cases(scene: SceneDocument, name: str, req: Requirements, legs: int,
         disp.append(Dispersion("terrain.mu_dynamic", "uniform", e.friction, "", False))
     if mc.cell_scatter > 0:
         disp.append(Dispersion("legs.cell_factors", "normal", (1.0, mc.cell_scatter), "", True))
-    runs = [Run(*p[:2], scene, *p[2:]) for p in points]
+    runs = [Run(rid, skey, scene, over, params, ref) for rid, skey, over, params, ref in points]
     if mc.samples:
-        base = [("mc", "lander", dict(fixed), {}, None)]
+        nominal: list[tuple] = [("mc", "lander", dict(fixed), {}, None)]
         runs += [Run(rid, skey, scene, over, params, ref)
-                 for rid, skey, over, params, ref in _sampled(base, disp, mc.samples, mc.seed, {"lander": scene})]
+                 for rid, skey, over, params, ref in _sampled(nominal, disp, mc.samples, mc.seed, {"lander": scene})]
     plot = ("initial.velocity[1]", "initial.velocity[2]")
     title = f"Landing cases of {name}: {len(combos)} envelope corners, {mc.samples} Monte Carlo"
     return Study(scene.path, name, title,
@@ -189,8 +191,8 @@ def _crush(curve) -> float:
 class TelescopingStructure(Table):
     """[structure] of telescoping legs: what the App. III free body needs beyond the legs and cells."""
 
-    bearing_length: Quantity("length")
-    friction: Number("any") = 0.05
+    bearing_length: Annotated[float, Quantity("length")]
+    friction: Annotated[float, Number("any")] = 0.05
     note: str = ""
 
     @model_validator(mode="after")
@@ -205,7 +207,7 @@ class ArticulatedStructure(Table):
     own cells (configuration `name`), other cell variants and their combinations."""
 
     truss: TrussTable
-    psi_final: Quantity("angle", "any")
+    psi_final: Annotated[float, Quantity("angle", "any")]
     grid: GridTable = GridTable()
     configuration: list[Configuration] = []
     combined: list[Combined] = []
@@ -214,6 +216,7 @@ class ArticulatedStructure(Table):
 
     @model_validator(mode="after")
     def _cases(self, info: ValidationInfo):
+        assert info.context is not None             # `_loads_config` passes psi_initial and name
         p0, p1 = info.context["psi_initial"], self.psi_final
         if not (radians(-90) < p0 < p1 < radians(90)):
             raise refuse("-90 deg < [legs] psi_initial < psi_final < 90 deg",
@@ -316,12 +319,11 @@ def read_lander(path: str | Path, overrides: dict | None = None, root: Node | No
     mats = library(extra)
     members = root.table("members", optional=True)
     nodes = []
-    for key in (members.data if members else {}):
-        m = members.table(key)
-        kind = "telescoping" if loads.telescoping else "articulated"
-        data = member_item(m, key, kind, loads.telescoping, envelopes[-1], rules)
-        nodes.append(Node(root.file, m.path, data, root.context))
     if members:
+        for key in members.data:
+            m = members.table(key)
+            data = member_item(m, key, loads.telescoping, envelopes[-1], rules)
+            nodes.append(Node(root.file, m.path, data, root.context))
         members.finish()
     nodes += [_crushable(n, root, scene_file, mats) for n in root.tables("item", optional=True, label="name")]
     if not nodes:

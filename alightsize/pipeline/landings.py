@@ -40,7 +40,7 @@ from alightsize.landings.study import Study, read_study
 from alightsize.landings.sweep import run_sweep
 
 LANDING = "landing "        # prefix of the `configuration` of an extreme that a landing set
-ROLES = ("criteria", "load_cases")
+Role = Literal["criteria", "load_cases"]
 
 
 @dataclass(frozen=True)
@@ -90,7 +90,9 @@ class Landings:
     def quasi_static_load(self, envelope: str, member: str, sense: str) -> float | None:
         """The load magnitude an envelope reference had before the landings joined (None: not loaded so)."""
         if envelope == TELESCOPING:
-            return abs(self.quasi_static.telescoping[member])
+            tele = self.quasi_static.telescoping
+            assert tele is not None                 # the "telescoping" envelope is a telescoping leg's free body
+            return abs(tele[member])
         qs = pick(self.quasi_static, envelope, member, sense)
         return abs(qs.value) if qs else None
 
@@ -116,6 +118,7 @@ class Landings:
 def _extreme(value: float | None, at: dict | None, run_id: str) -> Extreme | None:
     if value is None:
         return None
+    assert at is not None                           # a member's extreme is stored with where it occurs
     return Extreme(value, (radians(at["alpha_deg"]), radians(at["beta_deg"]), radians(at["psi_deg"])),
                    LANDING + run_id)
 
@@ -155,11 +158,13 @@ def merge(loads: LoadsResult, rows: tuple[dict, ...], names: tuple[str, ...]) ->
         env[name] = tuple(members)
     out = dataclasses.replace(loads, envelopes=env)
     if TELESCOPING in names:
-        tele, since = dict(loads.telescoping), dict(loads.telescoping_from or {})
+        leg, free_body = loads.config.telescoping, loads.telescoping
+        assert leg is not None and free_body is not None    # "telescoping": a telescoping leg's free body
+        tele, since = dict(free_body), dict(loads.telescoping_from or {})
         for member, lt, _ in found:
             if member in TELESCOPING_FORCES and lt is not None and abs(lt.value) > abs(tele[member]):
                 tele[member], since[member] = abs(lt.value), lt
-        slide = sliding_loads(loads.config.telescoping, tele["P1"])
+        slide = sliding_loads(leg, tele["P1"])
         tele["w1"], tele["w2"] = slide["w1"], slide["w2"]
         if slide["P4"] >= tele["P4"]:
             tele["P4"] = slide["P4"]
@@ -184,7 +189,7 @@ class LandingsTable(Table):
 
     study: str
     envelopes: list[str]
-    role: Literal[ROLES] = "criteria"
+    role: Role = "criteria"
     note: str = ""
 
 

@@ -100,18 +100,19 @@ def articulated_checks(name: str, node: Node, envelope: str, rules: Rules) -> li
     return _tube(_ref(envelope, name, "compression"), rules, None, length) + [tension]
 
 
-def member_item(node: Node, name: str, kind: str, leg: TelescopingLeg | None, envelope: str,
-                default_rules: str) -> dict:
-    """A `[members.NAME]` table as an item table with its derived checks (`rules` and role read here)."""
+def member_item(node: Node, name: str, leg: TelescopingLeg | None, envelope: str, default_rules: str) -> dict:
+    """A `[members.NAME]` table as an item table with its derived checks (`rules` and role read here); `leg`: the
+    telescoping leg's free body, None for an articulated leg."""
+    kind = "telescoping" if leg is not None else "articulated"
     allowed = TELESCOPING_MEMBERS if kind == "telescoping" else MEMBERS
     if name not in allowed:
         raise InputError(node.file, node.path, f"a member of the {kind} leg: " + ", ".join(allowed), repr(name))
     node.allow((*ITEM_KEYS, "rules", "role", "load_radius", "pin", "column_length"))
     rules = RULES[node.string("rules", default_rules, choices=tuple(RULES))]
-    checks = (telescoping_checks(name, node, leg, rules) if kind == "telescoping"
+    checks = (telescoping_checks(name, node, leg, rules) if leg is not None
               else articulated_checks(name, node, envelope, rules))
     item = {k: node.data[k] for k in ITEM_KEYS if k in node.data}
-    if kind == "telescoping" and name.endswith("_tube") and "length" not in item:   # each tube's span from the pads
+    if leg is not None and name.endswith("_tube") and "length" not in item:   # each tube's span from the pads
         item["length"] = _si(leg.length - leg.pad_lever if name == "lower_tube" else leg.pad_lever, "m")
     if "weight" not in item and "section" in node.data:
         shape = node.data["section"].get("shape") if isinstance(node.data["section"], dict) else None

@@ -8,7 +8,7 @@ from math import pi
 from alightsize.common.trace import Step
 from alightsize.common.config import Node
 from alightsize.model.materials import Material, lookup
-from alightsize.model.sections import Section
+from alightsize.model.sections import Section, given
 
 
 def tube_weight(rho: float, d_mean: float, t: float, length: float) -> float:
@@ -31,6 +31,13 @@ def scaled_weight(k: float, density_ratio: float, length_ratio: float, area_rati
     return k * density_ratio * length_ratio * area_ratio * w_model
 
 
+def _given(value: float | None, key: str) -> float:
+    """A size the weight method needs (KeyError naming it when neither the method nor the item gives it)."""
+    if value is None:
+        raise KeyError(key)
+    return value
+
+
 def _disc_area(holes: int, hole_d: float, inner_d: float) -> str:
     """The disc's area term of disc_weight with only the cut-outs it has: "{d}²", "({d}² - 6 {dh}²)", ..."""
     cuts = (f" - {holes} {{dh}}²" if holes and hole_d else "") + (" - {di}²" if inner_d else "")
@@ -51,7 +58,7 @@ class WeightSpec:
         if self.method == "fixed":
             return p["weight"], [Step("Weight (given)", "W", "{W}", (("W", p["weight"], "mass"),), p["weight"], "mass")]
         if self.method == "scaled":
-            ar = p["area_ratio"] if p["area_ratio"] is not None else section.area() / p["model_area"]
+            ar = p["area_ratio"] if p["area_ratio"] is not None else given(section).area() / p["model_area"]
             dr = p["density_ratio"] if p["density_ratio"] is not None else material.density / p["model_density"]
             w = scaled_weight(p["k"], dr, p["length_ratio"], ar, p["model_weight"])
             return w, [Step("Scaled weight (eq. 107)", "W", "{K} ({ρ/ρTM}) ({l/lTM}) ({A/ATM}) {WTM}",
@@ -60,14 +67,15 @@ class WeightSpec:
                              ("WTM", p["model_weight"], "mass")), w, "mass")]
         span = p.get("length") or length
         if self.method == "tube":
-            d = p["diameter"] or section.mean_diameter
-            t = p["wall"] or section.wall
+            d = p["diameter"] or given(section).mean_diameter
+            t = p["wall"] or given(section).wall
+            span = _given(span, "length")
             w = tube_weight(rho, d, t, span)
             steps = [Step("Weight", "W", "{ρ} π {d} {t} {l}", (("ρ", rho, "density"), ("d", d, "length"),
                                                               ("t", t, "length"), ("l", span, "length")), w, "mass")]
         elif self.method == "disc":
-            d = p["diameter"] or section.dims["diameter"]
-            t = p["thickness"] or section.dims["thickness"]
+            d = p["diameter"] or given(section).dims["diameter"]
+            t = p["thickness"] or given(section).dims["thickness"]
             di = p["inner_diameter"]
             if di is None:
                 di = section.dims.get("inner_diameter", 0.0) if section else 0.0
@@ -77,7 +85,8 @@ class WeightSpec:
                           (("ρ", rho, "density"), ("d", d, "length"), ("dh", dh, "length"), ("di", di, "length"),
                            ("t", t, "length")), w, "mass")]
         else:  # prism
-            a = p["area"] if p["area"] is not None else section.area()
+            a = p["area"] if p["area"] is not None else given(section).area()
+            span = _given(span, "length")
             w = prism_weight(rho, a, span)
             steps = [Step("Weight", "W", "{ρ} {A} {l}",
                           (("ρ", rho, "density"), ("A", a, "area"), ("l", span, "length")), w, "mass")]

@@ -65,7 +65,7 @@ def scale_tree(tree: Any, length: float, mass: float) -> Any:
 
 def _scale_string(text: str, length: float, mass: float) -> str:
     try:
-        q = units.registry().Quantity(text)
+        q: Any = units.registry().Quantity(text)     # pint's Quantity is untyped
     except Exception:
         return text
     if not hasattr(q, "units") or q.dimensionless or not str(q.units):

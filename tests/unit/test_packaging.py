@@ -1,5 +1,6 @@
 """Packaging: the simulator ships under the project's own name and imports nothing of the toolkit; the
-documents the README and docs name are in the repository."""
+documents the README and docs name are in the repository; the sources are ruff-clean and the packages a verdict
+is computed in pass mypy."""
 
 import importlib.util
 import os
@@ -8,6 +9,8 @@ import subprocess
 import sys
 import tomllib
 from pathlib import Path
+
+import pytest
 from conftest import ROOT
 
 
@@ -103,3 +106,17 @@ def test_the_sources_are_ruff_clean():
     run = subprocess.run([sys.executable, "-m", "ruff", "check", "--no-cache", "alightsize", "alightsize_sim", "tests",
                           "benchmarks"], cwd=ROOT, capture_output=True, text=True)
     assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
+
+
+TYPED_PACKAGES = ("alightsize/checks", "alightsize/weights", "alightsize/model", "alightsize/loads",
+                  "alightsize/pipeline")
+
+
+def test_the_typed_packages_pass_mypy(tmp_path):
+    """pyproject.toml's mypy settings find no error in the packages held to their type hints (those a
+    verdict is computed in: checks, weights, model, loads, pipeline)."""
+    if importlib.util.find_spec("mypy") is None:
+        pytest.skip("mypy is not installed (the test extra installs it)")
+    run = subprocess.run([sys.executable, "-m", "mypy", "--cache-dir", str(tmp_path / "mypy_cache"), *TYPED_PACKAGES],
+                         cwd=ROOT, capture_output=True, text=True)
+    assert run.returncode == 0 and "Success: no issues found" in run.stdout, run.stdout[-3000:] + run.stderr[-3000:]
