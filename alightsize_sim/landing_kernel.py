@@ -73,6 +73,9 @@ PATH_FLOOR = 100.0  # event_tol: steps this short or shorter skip the footpad pa
 # Compiled functions that only compiled code calls (they take bundles, which Python cannot build): no Python or C
 # wrapper is compiled for them.
 _inner = njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+# The step loop's phases, each called once per step: inlined into `run` (numba IR), which measured 4-7 % faster on
+# the 5 lb footpad scene than calls.
+_phase = njit(cache=True, inline="always", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 # The step loop's functions take their arrays as bundles (bundle.py): S, the landing (its scene and memory; `run`
 # takes them in LANDING.fields order); W, the legs' state at one evaluation (new_work); T, the step's scratch;
 # H, the record (`run`'s history, in HISTORY.fields order).
@@ -693,7 +696,7 @@ def _start(S, T, W, H, y, t):
     _events(S, y, W, T.g_prev, S.ctl[C_BAND])
 
 
-@_inner
+@_phase
 def _try_step(S, T, W, y, h, fixed, flight, weight, e):
     """One embedded step of size h from y (T.y1, T.err, T.K; W at y1) and its error norm (e unchanged when the
     step is not error-controlled): (whether it passes the error test, the norm)."""
@@ -802,7 +805,7 @@ def _apply(S, W, y, g, forced):
     return changed
 
 
-@_inner
+@_phase
 def _accept(S, T, W, H, y, t, h_acc, forced):
     """Accept the step of h_acc ending at time t in state T.y1 (W the legs there): y takes it, memory and the
     event `forced` are committed, the record gets its row, K[0] and T.g_prev the derivative and event values at
@@ -858,7 +861,7 @@ def _accept(S, T, W, H, y, t, h_acc, forced):
             _events(S, y, W, g_prev, band)
 
 
-@_inner
+@_phase
 def _next_h(S, h, e, j, fixed, flight):
     """The next step's size after an accepted step of (tried) size h, error norm e, event j (-1: none); kept in
     run_state[S_H] unless in free flight."""
