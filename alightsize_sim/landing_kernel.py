@@ -697,9 +697,11 @@ def _start(S, T, W, H, y, t):
 
 
 @_phase
-def _try_step(S, T, W, y, h, fixed, flight, weight, e):
+def _try_step(S, T, W, y, h, law, e):
     """One embedded step of size h from y (T.y1, T.err, T.K; W at y1) and its error norm (e unchanged when the
-    step is not error-controlled): (whether it passes the error test, the norm)."""
+    step is not error-controlled): (whether it passes the error test, the norm). law: (fixed steps, free flight,
+    the capsule's weight)."""
+    fixed, flight, weight = law
     _stage(S, y, h, T.K, T.y1, T.err, W, flight)
     S.cnt[K_RHS] += 6
     if not (fixed or flight):
@@ -710,7 +712,7 @@ def _try_step(S, T, W, y, h, fixed, flight, weight, e):
 
 
 @_inner
-def _locate(S, T, W, W_lo, y, h, j, fixed, flight, weight):
+def _locate(S, T, W, W_lo, y, h, j, law):
     """The earliest event j crossing within the step of size h: located first on the step's continuous extension
     (_guide); the step is accepted there, just short of it, when its stages saw one smooth law (_on_extension);
     else by real trial steps aimed just short of it (Newton with the interpolant's slope, Illinois on the real
@@ -723,7 +725,8 @@ def _locate(S, T, W, W_lo, y, h, j, fixed, flight, weight):
     Each trial step passes the error test too, or the step is rejected: a shorter step can meet a jump the full
     one missed (a slip search that misses the dip near the peg-leg axis and slides far). Returns (the event, the
     accepted step, the last trial step, its error norm); when that norm passes, T.y1 and W hold the state the
-    step is accepted at (K[6] its derivative when the step is empty)."""
+    step is accepted at (K[6] its derivative when the step is empty). law: as _try_step's."""
+    fixed, flight, weight = law
     K, y1, err, g_prev, g1, g_lo, y_lo = T.K, T.y1, T.err, T.g_prev, T.g1, T.g_lo, T.y_lo
     mu, contact, sliding, ctl, cnt = S.mu, S.contact, S.sliding, S.ctl, S.cnt
     n = S.mem.shape[0]
@@ -902,7 +905,8 @@ def run(arrays, y, t, history, scratch):
         if flight:
             h = ctl[C_MAXSTEP]
         h = min(h, t_final - t)
-        passed, e = _try_step(S, T, W, y, h, fixed, flight, weight, e)
+        law = (fixed, flight, weight)
+        passed, e = _try_step(S, T, W, y, h, law, e)
         if not passed:
             cnt[K_REJECTED] += 1
             h *= _shrink(e)
@@ -911,7 +915,7 @@ def run(arrays, y, t, history, scratch):
         j = _first(g_prev, g1)
         forced, h_acc = -1, h
         if j >= 0:
-            j, h_acc, mid, e_trial = _locate(S, T, W, W_lo, y, h, j, fixed, flight, weight)
+            j, h_acc, mid, e_trial = _locate(S, T, W, W_lo, y, h, j, law)
             if not e_trial <= 1.0:
                 cnt[K_REJECTED] += 1
                 h = mid * _shrink(e_trial)
