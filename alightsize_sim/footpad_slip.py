@@ -145,12 +145,14 @@ def _push(t0, t1):
 
 
 @njit(cache=True)
-def _at(geo, cells, i, mem, shape, mu, P0, d0, d1, s, r, R, v, w, P, defl, frc, rte, X):
+def _at(sl, s):
     """Excess FE12 - mu FE3 and force scale with the footpad moved by s along d from P0; False out of the leg's
-    reach. On a rock's flank, or leaving one, the excess counts the push along the path only (across the foot of
+    reach. sl: the slide, (geo, cells, i, mem, shape, mu, P0, d0, d1, r, R, v, w, P, defl, frc, rte, X) (_slide).
+    On a rock's flank, or leaving one, the excess counts the push along the path only (across the foot of
     a rock the normal turns, and a push there may drive the footpad back), and where the path climbs a flank
     steeper than friction lets a footpad climb (n3 - mu t3 <= LOCK, t its direction: a rock's foot,
     footpad_mass._climb) the flank holds the footpad: the excess there is -1."""
+    geo, cells, i, mem, shape, mu, P0, d0, d1, r, R, v, w, P, defl, frc, rte, X = sl
     _place(geo[9], P0, d0, d1, s, P)
     fe12, fe3, t0, t1, _, _, _, _ = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
     if defl[0] < main_set(cells, i, mem):
@@ -167,14 +169,14 @@ def _at(geo, cells, i, mem, shape, mu, P0, d0, d1, s, r, R, v, w, P, defl, frc, 
 
 
 @njit(cache=True)
-def _dip(geo, cells, i, mem, shape, mu, P0, d0, d1, a, h_a, b, r, R, v, w, P, defl, frc, rte, X):
+def _dip(sl, a, h_a, b):
     """Golden-section search for the lowest excess between a (excess h_a > 0) and b, stopping at the first
     point where it is not positive; returns (lo, h_lo, s, h_s): that point and the left end of the search's
     last bracket (excess positive, in reach), so that [lo, s] brackets a crossing when h_s <= 0."""
     k = 0.3819660112501051
     c, d = a + k * (b - a), b - k * (b - a)
-    hc, _, okc = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, c, r, R, v, w, P, defl, frc, rte, X)
-    hd, _, okd = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, d, r, R, v, w, P, defl, frc, rte, X)
+    hc, _, okc = _at(sl, c)
+    hd, _, okd = _at(sl, d)
     for _ in range(MAX_DIP):
         if okc and hc <= 0.0:
             return a, h_a, c, hc
@@ -183,26 +185,25 @@ def _dip(geo, cells, i, mem, shape, mu, P0, d0, d1, a, h_a, b, r, R, v, w, P, de
         if not okd or hc < hd:
             b, d, hd, okd = d, c, hc, okc
             c = a + k * (b - a)
-            hc, _, okc = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, c, r, R, v, w, P, defl, frc, rte, X)
+            hc, _, okc = _at(sl, c)
         else:
             a, h_a, c, hc, okc = c, hc, d, hd, okd
             d = b - k * (b - a)
-            hd, _, okd = _at(geo, cells, i, mem, shape, mu, P0, d0, d1, d, r, R, v, w, P, defl, frc, rte, X)
+            hd, _, okd = _at(sl, d)
     return a, h_a, c, hc if okc else 1.0
 
 
 @njit(cache=True)
-def _refine(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_lo, h_lo, s_hi, h_hi, ok_hi, r, R, v, w, P, defl, frc,
-            rte, X, tol: float) -> tuple[float, bool]:
+def _refine(sl, s_lo, h_lo, s_hi, h_hi, ok_hi, tol: float) -> tuple[float, bool]:
     """Close the bracket [s_lo, s_hi] (excess h_lo > 0; h_hi <= 0, or s_hi out of reach) to tol of the reach, or
     until the excess is within tol of the force scale: bisection while the far end is out of reach, then
     Brent's method (Brent 1973, ch. 4: inverse quadratic interpolation, secant or bisection; steps of at least
     the tolerance, so the bracket closes). Returns (s, ok): the crossing on its friction-feasible side, or the
     edge of the reach (ok False) when no crossing is in reach."""
-    xtol = tol * geo[2][i]
+    xtol = tol * sl[0][2][sl[2]]                                # the leg's reach
     while not ok_hi and s_hi - s_lo > xtol:
         s_m = 0.5 * (s_lo + s_hi)
-        h_m, _, ok_m = _at(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_m, r, R, v, w, P, defl, frc, rte, X)
+        h_m, _, ok_m = _at(sl, s_m)
         if ok_m and h_m > 0.0:
             s_lo, h_lo = s_m, h_m
         elif ok_m:
@@ -242,7 +243,7 @@ def _refine(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_lo, h_lo, s_hi, h_hi,
             d = e = xm
         a, fa = b, fb
         b += d if abs(d) > xtol else (xtol if xm > 0.0 else -xtol)
-        fb, scale, ok_b = _at(geo, cells, i, mem, shape, mu_d, P0, d0, d1, b, r, R, v, w, P, defl, frc, rte, X)
+        fb, scale, ok_b = _at(sl, b)
         if ok_b and abs(fb) <= tol * (scale + 1.0):
             return b, True
     if ok_b and fb <= 0.0:
@@ -272,13 +273,19 @@ def footpad_force(geo, cells, i, mem, shape, P0, sliding, hold, mu_s, mu_d, r, R
     h0 = fe12 - mu_d * max(fe3, 0.0)
     if h0 <= 0.0:                                               # static limit exceeded, dynamic one not
         return 1, power, alpha, beta, psi, 1.0, 0.0, 0.0
-    return _slide(geo, cells, i, mem, shape, P0, mu_d, r, R, v, w, P, defl, frc, rte, X, tol, fe1, fe2, h0)
+    return _slide((geo, cells, i, mem, shape), (r, R, v, w), (P, defl, frc, rte, X), P0, mu_d, tol, _push(fe1, fe2), h0)
 
 
 @njit(cache=True)
-def _slide(geo, cells, i, mem, shape, P0, mu_d, r, R, v, w, P, defl, frc, rte, X, tol, t0, t1, h0):
-    """The slide: the footpad moved from P0 along the leg's push until FE12 = mu_D FE3 (see footpad_force)."""
-    d0, d1 = _push(t0, t1)                                      # the leg's push on the footpad
+def _slide(leg, kin, out, P0, mu_d, tol, push, h0):
+    """The slide: the footpad moved from P0 along the leg's push (in-plane unit direction) until FE12 = mu_D FE3
+    (see footpad_force). leg: (geo, cells, i, mem, shape), kin: the capsule's (r, R, v, w), out: the arrays
+    written (P, defl, frc, rte, X)."""
+    geo, cells, i, mem, shape = leg
+    r, R, v, w = kin
+    P, defl, frc, rte, X = out
+    d0, d1 = push
+    sl = (geo, cells, i, mem, shape, mu_d, P0, d0, d1, r, R, v, w, P, defl, frc, rte, X)   # _at's slide
     # Expand until the excess changes sign or the footpad leaves the leg's reach: steps growing fourfold, or
     # just past the secant's root when that is nearer, so that the nearest crossing (the one continuous with
     # the held position) is not stepped over.
@@ -293,7 +300,7 @@ def _slide(geo, cells, i, mem, shape, P0, mu_d, r, R, v, w, P, defl, frc, rte, X
             root = s_lo + h_lo * (s_lo - s_prev) / (h_prev - h_lo)
             aimed = root < s_hi
             s_hi = min(s_hi, s_lo + 1.2 * (root - s_lo))
-        h_hi, _, ok_hi = _at(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_hi, r, R, v, w, P, defl, frc, rte, X)
+        h_hi, _, ok_hi = _at(sl, s_hi)
         if h_hi <= 0.0:
             break
         turned = h_lo < h_prev and h_hi > h_lo
@@ -303,15 +310,13 @@ def _slide(geo, cells, i, mem, shape, P0, mu_d, r, R, v, w, P, defl, frc, rte, X
             # an articulated tip crossing its peg-leg axis, where alpha passes through the seat). Golden-section
             # search for its bottom.
             a, h_a = (s_prev, h_prev) if turned else (s_lo, h_lo)
-            a, h_a, s_m, h_m = _dip(geo, cells, i, mem, shape, mu_d, P0, d0, d1, a, h_a, s_hi, r, R, v, w, P, defl,
-                                    frc, rte, X)
+            a, h_a, s_m, h_m = _dip(sl, a, h_a, s_hi)
             if h_m <= 0.0:
                 s_lo, h_lo, s_hi, h_hi, ok_hi = a, h_a, s_m, h_m, True
                 break
         s_prev, h_prev, s_lo, h_lo = s_lo, h_lo, s_hi, h_hi
         step = 4.0 * (s_lo - s_prev)
-    s_end, ok_hi = _refine(geo, cells, i, mem, shape, mu_d, P0, d0, d1, s_lo, h_lo, s_hi, h_hi, ok_hi, r, R, v, w, P,
-                           defl, frc, rte, X, tol)
+    s_end, ok_hi = _refine(sl, s_lo, h_lo, s_hi, h_hi, ok_hi, tol)
     _place(geo[9], P0, d0, d1, s_end, P)
     fe12, fe3, t0, t1, power, alpha, beta, psi = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
     deficit = 0.0 if ok_hi else max(fe12 - mu_d * max(fe3, 0.0), 0.0) / cells[3][i, 0]
