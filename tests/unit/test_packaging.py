@@ -114,9 +114,12 @@ TYPED_PACKAGES = ("alightsize/checks", "alightsize/weights", "alightsize/model",
 
 def test_the_typed_packages_pass_mypy(tmp_path):
     """pyproject.toml's mypy settings find no error in the packages held to their type hints (those a
-    verdict is computed in: checks, weights, model, loads, pipeline)."""
+    verdict is computed in: checks, weights, model, loads, pipeline). The modules they import are read for their
+    types but their own errors are not counted here (`--follow-imports=silent`): how mypy resolves them differs
+    between an editable and a regular install."""
     if importlib.util.find_spec("mypy") is None:
         pytest.skip("mypy is not installed (the test extra installs it)")
-    run = subprocess.run([sys.executable, "-m", "mypy", "--cache-dir", str(tmp_path / "mypy_cache"), *TYPED_PACKAGES],
+    run = subprocess.run([sys.executable, "-m", "mypy", "--cache-dir", str(tmp_path / "mypy_cache"),
+                          "--follow-imports=silent", *TYPED_PACKAGES],
                          cwd=ROOT, capture_output=True, text=True)
     assert run.returncode == 0 and "Success: no issues found" in run.stdout, run.stdout[-3000:] + run.stderr[-3000:]
