@@ -160,6 +160,6 @@ def synthesize(lander: str | Path, out: str | Path, start: dict[str, float] | No
     """
     from alightsize.reports.synthesis_report import write_synthesis
     from alightsize.synthesis.search import synthesize as _synthesize
-    res = _synthesize(lander, Path(out), start, trade, backend, workers, scheduler)
+    res = _synthesize(lander, Path(out), start, trade=trade, backend=backend, workers=workers, scheduler=scheduler)
     write_synthesis(res, Path(out))
     return res

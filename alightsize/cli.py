@@ -133,8 +133,8 @@ def _synthesize(args, stage: Stage) -> int:
     spec = read_synthesis(args.lander)
     start = parse_start(spec, args.start)
     try:
-        res = synthesize(spec, out, start, not args.no_trade, backend, workers,
-                         args.scheduler, log=lambda msg: print(msg, flush=True), progress=True)
+        res = synthesize(spec, out, start, trade=not args.no_trade, backend=backend, workers=workers,
+                         scheduler=args.scheduler, log=lambda msg: print(msg, flush=True), progress=True)
     except KeyboardInterrupt:
         print(f"alightsize: interrupted; every landing and candidate is stored in {out / 'runs.sqlite'}: "
               "run the same command again to resume", file=sys.stderr)

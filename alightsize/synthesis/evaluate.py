@@ -85,7 +85,7 @@ class Evaluator:
     """Candidates of one lander file under one context (requirement overrides, e.g. a trade point's
     envelope), landed into `out`/runs.sqlite on a sweep backend."""
 
-    def __init__(self, path: Path, free: tuple[FreeParameter, ...], out: Path, context: dict | None = None,
+    def __init__(self, path: Path, free: tuple[FreeParameter, ...], out: Path, *, context: dict | None = None,
                  backend: str = "pool", workers: int | None = None, scheduler: str | None = None,
                  stroke_margin: float = 0.0, quiet: bool = True, data: dict | None = None):
         self.path, self.free, self.out = Path(path), free, Path(out)

@@ -133,7 +133,7 @@ def _best(history: list[tuple[int, Evaluation]]) -> Evaluation:
     return min((e for _, e in history), key=lambda e: e.objective)
 
 
-def synthesize(path: str | Path | SynthesisSpec, out: str | Path, start: dict[str, float] | None = None,
+def synthesize(path: str | Path | SynthesisSpec, out: str | Path, start: dict[str, float] | None = None, *,
                trade: bool = True, backend: str = "pool", workers: int | None = None, scheduler: str | None = None,
                log: Callable[[str], None] = lambda s: None, progress: bool = False) -> SynthesisResult:
     """Search the lightest landing system of a lander file's `[synthesis]` (a path, or the spec already read;
@@ -149,8 +149,9 @@ def synthesize(path: str | Path | SynthesisSpec, out: str | Path, start: dict[st
             raise InputError("(start)", k, f"a start within [{p.show(p.low)}, {p.show(p.high)}]", p.show(v))
         x0[spec.free.index(p)] = v
     samples = {} if spec.budget.samples is None else {"requirements.monte_carlo.samples": spec.budget.samples}
-    ev = Evaluator(spec.path, spec.free, out, samples, backend, workers, scheduler, spec.stroke_margin,
-                   quiet=not progress, data=spec.data)
+    run = {"backend": backend, "workers": workers, "scheduler": scheduler, "stroke_margin": spec.stroke_margin,
+           "quiet": not progress, "data": spec.data}
+    ev = Evaluator(spec.path, spec.free, out, context=samples, **run)
     log(f"{spec.path.name}: {len(spec.free)} free parameters, up to {spec.budget.generations + 1} generations "
         f"of {spec.budget.population * len(spec.free)} candidates -> {out / 'runs.sqlite'}")
     history = search(ev, spec, spec.budget, x0, log)
@@ -173,8 +174,8 @@ def synthesize(path: str | Path | SynthesisSpec, out: str | Path, start: dict[st
             result.trade[axis] = []
             for value, label in values:
                 log(f"trade point {axis} = {label}")
-                tev = Evaluator(spec.path, spec.free, out, {**_trade_context(ev, axis, value), **_samples(spec)},
-                                backend, workers, scheduler, spec.stroke_margin, quiet=not progress, data=spec.data)
+                context = {**_trade_context(ev, axis, value), **_samples(spec)}
+                tev = Evaluator(spec.path, spec.free, out, context=context, **run)
                 hist = search(tev, spec, spec.trade_budget, best.x, log)
                 result.trade[axis].append(TradePoint(axis, value, label, _best(hist)))
                 ev.computed += tev.computed
