@@ -43,6 +43,7 @@ from alightsize.model.gravity import Gravity
 from alightsize.model.legs import TrussTable
 from alightsize.model.scene_config import (Cell, SceneConfig, SceneDocument, SceneFile, TelescopingLegs,
                                            build_scene, lander_scene)
+from alightsize.pipeline.cores import core_prism, crush_stroke
 from alightsize.pipeline.config import DesignSpec, UnitSystem, read_design, read_items
 from alightsize.pipeline.landings import LandingSpec
 from alightsize.checks.rules import DEFAULT_RULES, RuleSet
@@ -265,12 +266,6 @@ def cell_curve(root: Node, cell: str) -> tuple[tuple[float, ...], tuple[float, .
     return c.deflection, c.force
 
 
-def crush_stroke(deflection, force) -> tuple[float, float]:
-    """(crushing force, stroke to bottoming) of a cell curve: the largest force before the bottoming segment
-    and the deflection where that segment starts."""
-    return max(force[:-1]), deflection[-2]
-
-
 def _crushable(node: Node, root: Node, scene: SceneFile, mats: dict) -> Node:
     """An item weighed as a cell's crushable core, `weight = {method = "crushable", cell = NAME}`, as the prism
     it is: area = crushing force / crush strength, length = stroke / usable stroke fraction (App. V)."""
@@ -286,12 +281,7 @@ def _crushable(node: Node, root: Node, scene: SceneFile, mats: dict) -> Node:
     if mat is None or mat.crush_strength is None or mat.stroke_fraction is None:
         raise node.error("material", "a crushable material (with crush_strength and stroke_fraction)",
                          repr(node.data.get("material")))
-    force, stroke = crush_stroke(scene.cells[cell].deflection, scene.cells[cell].force)
-    prism = {k: v for k, v in w.items() if k not in ("method", "cell")}
-    prism.update(method="prism", area=f"{force / mat.crush_strength!r} m^2",
-                 length=f"{stroke / mat.stroke_fraction!r} m")
-    prism.setdefault("note", f"cell {cell}: area = crushing force / crush strength, "
-                             f"length = stroke / {mat.stroke_fraction:g}")
+    prism = core_prism(w, scene.cells[cell].deflection, scene.cells[cell].force, mat, cell)
     return Node(node.file, node.path, {**node.data, "weight": prism}, root.context)
 
 
