@@ -49,6 +49,7 @@ from alightsize.pipeline.landings import LandingSpec
 from alightsize.checks.rules import DEFAULT_RULES, RuleSet
 from alightsize.pipeline.items import RequiredFactor
 from alightsize.pipeline.members import member_item
+from alightsize.pipeline.outrigger import OUTRIGGER, outrigger_item, outrigger_span
 
 SCENE_TABLES = ("capsule", "cells", "legs", "terrain", "initial", "controls", "output")
 ALL_CONFIGURATIONS = "all"           # the combined envelope of App. III cell variants when none is named
@@ -194,6 +195,7 @@ class TelescopingStructure(Table):
 
     bearing_length: Annotated[float, Quantity("length")]
     friction: Annotated[float, Number("any")] = 0.05
+    body_radius: Annotated[float, Quantity("length")] | None = None     # outrigger out to [legs] radius
     note: str = ""
 
     @model_validator(mode="after")
@@ -260,6 +262,14 @@ def _loads_config(path: Path, name: str, structure: dict, scene: SceneFile, legs
     return cfg, (cases[-1].name, *(c[0] for c in combined))
 
 
+def _outrigger_span(path: Path, structure: dict, scene: SceneFile) -> float | None:
+    """The outrigger's length of a telescoping lander with `[structure] body_radius` (None: no outrigger)."""
+    if not isinstance(scene.legs, TelescopingLegs):
+        return None
+    s = validate(TelescopingStructure, structure, str(path), "structure")
+    return outrigger_span(scene.legs.radius, s.body_radius)
+
+
 def cell_curve(root: Node, cell: str) -> tuple[tuple[float, ...], tuple[float, ...]]:
     """(deflections m, forces N) of the `[cells.NAME]` table of a lander file as written (no `factor`)."""
     c = validate(Cell, root.table("cells").table(cell).data, root.file, f"cells.{cell}")
@@ -308,11 +318,16 @@ def read_lander(path: str | Path, overrides: dict | None = None, root: Node | No
     loads, envelopes = _loads_config(path, name, lander.structure, scene_file, scene.scene.legs, units)
     mats = library(extra)
     members = root.table("members", optional=True)
+    span = _outrigger_span(path, lander.structure, scene_file)
+    if span is not None and OUTRIGGER not in (members.data if members else {}):
+        raise root.error(f"members.{OUTRIGGER}", f"the outrigger from the body ([structure] body_radius) to the "
+                         f"legs' attachment, {span:.4g} m out: a member to check and weigh", "none")
     nodes = []
     if members:
         for key in members.data:
             m = members.table(key)
-            data = member_item(m, key, loads.telescoping, envelopes[-1], rules)
+            data = (outrigger_item(m, loads.telescoping, span, rules) if key == OUTRIGGER
+                    else member_item(m, key, loads.telescoping, envelopes[-1], rules))
             nodes.append(Node(root.file, m.path, data, root.context))
         members.finish()
     nodes += [_crushable(n, root, scene_file, mats) for n in root.tables("item", optional=True, label="name")]
