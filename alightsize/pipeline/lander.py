@@ -4,8 +4,9 @@ members' checks, the landing cases of the requirements). Reading it only reads a
 ```
 [lander]        name, title, gravity ("earth" | "moon" | "mars" | an acceleration), rules, materials
 [capsule] [cells.NAME] [legs] [terrain] [controls] [initial]     as in a scene (docs/reference/scene.md)
-[structure]     telescoping: bearing_length, friction, body_radius (outrigger); articulated: truss, psi_final, grid, configuration, combined
-[members.NAME]  material, section, role, size, weight, ... (alightsize.pipeline.members)
+[structure]     telescoping: bearing_length, friction, body_radius (outrigger); articulated: truss, psi_final, grid,
+                configuration, combined
+[members.NAME]  material, section, role, size, weight, ... (alightsize.pipeline.members, .outrigger)
 [[item]]        App. IV items with their checks written out (overrides; the 1966 examples)
 [requirements]  required_design_factor (allow_below_one), decimals, weight_goal, criteria, envelope, monte_carlo
 [report]        units = "US" | "SI"

@@ -78,8 +78,9 @@ class TripodLoads:
         where = [None] * len(forces) if positions is None else list(np.atleast_2d(positions))
         s = [strut_forces(leg, F, P) for F, P in zip(forces, where)]
         t = np.array([x.secondaries for x in s])
-        return cls(max(0.0, -min(float(x.primary) for x in s)), tuple(map(float, np.maximum(0.0, -t.min(0)))),
-                   tuple(map(float, np.maximum(0.0, t.max(0)))), max(0.0, -min(float(x.primary_upper) for x in s)),
+        c, e = np.maximum(0.0, -t.min(0)), np.maximum(0.0, t.max(0))
+        return cls(max(0.0, -min(float(x.primary) for x in s)), (float(c[0]), float(c[1])),
+                   (float(e[0]), float(e[1])), max(0.0, -min(float(x.primary_upper) for x in s)),
                    max(0.0, max(float(x.primary_upper) for x in s)), max(float(x.knee_moment) for x in s),
                    max(float(np.linalg.norm(x.hardpoint_forces[0])) for x in s),
                    float(np.linalg.norm(forces, axis=1).max()))

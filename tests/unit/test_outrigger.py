@@ -88,3 +88,22 @@ def test_a_stub_shorter_than_its_diameter_is_refused():
     """L = 2.4 - 2.3 = 0.1 m below the 150 mm tube: the beam formula's shear is no longer negligible."""
     with pytest.raises(InputError, match="outrigger's length"):
         _lunar(lambda d: d["structure"].update(body_radius="2.3 m"))
+
+
+def _combined(moment_force, moment_arm):
+    from alightsize.checks.rules import RULES
+    from alightsize.common.config import Node
+    from alightsize.model.materials import library
+    from alightsize.pipeline.items import read_item
+    data = {"name": "beam", "material": "7178-t6",
+            "section": {"shape": "tube", "outside_diameter": "100 mm", "wall": "3 mm"},
+            "check": [{"kind": "combined", "load": "1 kN", "moment_force": moment_force, "moment_arm": moment_arm}]}
+    return read_item(Node("case.toml", "item[0]", data), library(), 1.2, RULES["current"])
+
+
+def test_a_moment_of_several_force_arm_terms_adds_their_magnitudes():
+    """M = |P1| l1 + |P2| l2 = 2 kN x 1 m + 3 kN x 0.5 m = 3.5 kN m (either sign of a force): exact in floats."""
+    o = _combined(["2 kN", "-3 kN"], ["1 m", "0.5 m"]).evaluate()[0]
+    assert next(s.value for s in o.steps if s.symbol == "M") == pytest.approx(3500.0, rel=1e-15)
+    with pytest.raises(InputError, match="moment_arm"):
+        _combined(["2 kN", "3 kN"], ["1 m"])
