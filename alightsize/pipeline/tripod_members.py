@@ -11,7 +11,7 @@ length or a count: the geometry gives them):
   force (either sense) with the knee moment (combined), a pinned column over a, local buckling under both.
 - `primary_lower` (cantilever): the primary's overhang below the knee, length b = s L0: the cartridge's
   compression with the knee moment (combined), local buckling under both, and a column of effective length
-  `overhang_effective_length(a, b)`.
+  `overhang_effective_length(a, b)` under the larger compression of the primary's two parts.
 - `secondary_strut`: one item per secondary (`secondary_strut_1`, `_2`), a tube over its pin-to-pin length
   l_i: compression, a pinned column over l_i, local buckling, tension.
 - `end_pin`: the pins at both ends of each strut (`end_pin_primary`, `end_pin_secondary_1`, `_2`, two each): a
@@ -119,9 +119,11 @@ def _m(x: float) -> str:
     return f"{float(x)!r} m"
 
 
-def _tube(compression: float, tension: float, rules: Rules, column: float, moment: float = 0.0) -> list[dict]:
+def _tube(compression: float, tension: float, rules: Rules, column: float, moment: float = 0.0,
+          column_load: float | None = None) -> list[dict]:
     """A strut tube: axial stress in each sense it is loaded (combined with the moment when there is one), a pinned
-    column of length `column` and local buckling (with the moment) under its compression."""
+    column of length `column` under `column_load` (its compression if None) and local buckling (with the moment)
+    under its compression."""
     bend = {"moment": f"{float(moment)!r} N*m"} if moment > 0 else {}
     out: list[dict] = []
     if bend:
@@ -129,8 +131,9 @@ def _tube(compression: float, tension: float, rules: Rules, column: float, momen
     else:
         out += [{"kind": kind, "load": _n(p)} for kind, p in (("compression", compression), ("tension", tension))
                 if p > 0]
-    if compression > 0:
-        out.append({"kind": "column_buckling", "load": _n(compression), "length": _m(column),
+    column_load = compression if column_load is None else column_load
+    if column_load > 0:
+        out.append({"kind": "column_buckling", "load": _n(column_load), "length": _m(column),
                     "formula": rules.column})
     if compression > 0 or bend:
         out.append({"kind": "local_buckling", "load": _n(compression), **bend, "formula": rules.local})
@@ -181,7 +184,8 @@ def tripod_member_items(node: Node, name: str, leg: TripodLeg, loads: TripodLoad
                                                    rules, a, loads.knee_moment))]
     elif name == "primary_lower":
         items = [("primary_lower", b, tube, _tube(loads.primary, 0.0, rules, overhang_effective_length(a, b),
-                                                   loads.knee_moment))]
+                                                   loads.knee_moment,      # the whole primary buckles as one
+                                                   max(loads.primary, loads.primary_upper_compression)))]
     elif name == "secondary_strut":
         items = [(f"secondary_strut_{i + 1}", li, tube, _tube(loads.secondary_compression[i],
                                                               loads.secondary_tension[i], rules, li))

@@ -144,6 +144,7 @@ def test_cantilever_members_carry_the_knee_moment():
         assert combined.params["M"] == pytest.approx(loads.knee_moment, rel=1e-12)
     column = next(c for c in items["primary_lower"].checks if c.kind == "column_buckling")
     assert column.params["L"] == pytest.approx(overhang_effective_length(0.7 * l0, 0.3 * l0), rel=1e-12)
+    assert column.params["P"] == pytest.approx(max(loads.primary, loads.primary_upper_compression), rel=1e-12)
     with pytest.raises(InputError, match="primary_strut"):
         _items(leg, MEMBERS, loads)                 # an inverted tripod's member on a cantilever
 
