@@ -64,12 +64,20 @@ def _read_load(node: Node, rules: Rules) -> dict:
 
 
 def _read_moment(node: Node, rules: Rules) -> dict:
-    """A moment given directly, or as force x arm (M = P l, App. IV); either sign (the worst fibre is taken)."""
+    """A moment given directly, or as force x arm (M = P l, App. IV); either sign (the worst fibre is taken).
+    Arrays of forces and arms (same length) give the bound M = sum |P_i| l_i of moments whose vectors may add."""
     if node.has("moment"):
         return {"M": node.quantity("moment", "moment", positive=False)}
     if node.has("moment_force"):
-        return {"Mf": node.quantity("moment_force", "force", positive=False),
-                "arm": node.quantity("moment_arm", "length")}
+        if not isinstance(node.raw("moment_force"), list):
+            return {"Mf": node.quantity("moment_force", "force", positive=False),
+                    "arm": node.quantity("moment_arm", "length")}
+        forces, arms = _list(node, "moment_force"), node.raw("moment_arm")
+        if not isinstance(arms, list) or len(arms) != len(forces):
+            raise node.error("moment_arm", f"an array of {len(forces)} lengths, one per moment_force",
+                             repr(arms))
+        return {"Mf": tuple(node.parse_quantity("moment_force", f, "force", positive=False) for f in forces),
+                "arm": tuple(node.parse_quantity("moment_arm", a, "length") for a in arms)}
     raise node.error("moment", "a moment (\"16150 lbf*in\") or moment_force and moment_arm", "neither")
 
 
@@ -191,8 +199,14 @@ def _moment(p: dict) -> tuple[float, Step | None]:
     """The moment's magnitude |M| (or |P| l): the checks take the worst fibre, whichever side it is on."""
     if "M" in p:
         return abs(p["M"]), None
-    m = abs(p["Mf"]) * p["arm"]
-    return m, Step("Moment", "M", "|{P}| {l}", (("P", p["Mf"], "force"), ("l", p["arm"], "length")), m, "moment")
+    if not isinstance(p["Mf"], tuple):
+        m = abs(p["Mf"]) * p["arm"]
+        return m, Step("Moment", "M", "|{P}| {l}", (("P", p["Mf"], "force"), ("l", p["arm"], "length")), m, "moment")
+    n = range(1, len(p["Mf"]) + 1)
+    m = sum(abs(f) * a for f, a in zip(p["Mf"], p["arm"]))
+    return m, Step("Moment (bound: the terms' magnitudes added)", "M", " + ".join(f"|{{P{i}}}| {{l{i}}}" for i in n),
+                   tuple(x for i, f, a in zip(n, p["Mf"], p["arm"]) for x in ((f"P{i}", f, "force"),
+                                                                             (f"l{i}", a, "length"))), m, "moment")
 
 
 def _direct_step(load: float, area: float, label: str = "Compressive stress", symbol: str = "σc") -> Step:

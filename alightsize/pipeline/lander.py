@@ -4,8 +4,9 @@ members' checks, the landing cases of the requirements). Reading it only reads a
 ```
 [lander]        name, title, gravity ("earth" | "moon" | "mars" | an acceleration), rules, materials
 [capsule] [cells.NAME] [legs] [terrain] [controls] [initial]     as in a scene (docs/reference/scene.md)
-[structure]     telescoping: bearing_length, friction; articulated: truss, psi_final, grid, configuration, combined
-[members.NAME]  material, section, role, size, weight, ... (alightsize.pipeline.members)
+[structure]     telescoping: bearing_length, friction, body_radius (outrigger); articulated: truss, psi_final, grid,
+                configuration, combined
+[members.NAME]  material, section, role, size, weight, ... (alightsize.pipeline.members, .outrigger)
 [[item]]        App. IV items with their checks written out (overrides; the 1966 examples)
 [requirements]  required_design_factor (allow_below_one), decimals, weight_goal, criteria, envelope, monte_carlo
 [report]        units = "US" | "SI"
@@ -43,11 +44,13 @@ from alightsize.model.gravity import Gravity
 from alightsize.model.legs import TrussTable
 from alightsize.model.scene_config import (Cell, SceneConfig, SceneDocument, SceneFile, TelescopingLegs,
                                            build_scene, lander_scene)
+from alightsize.pipeline.cores import core_prism, crush_stroke
 from alightsize.pipeline.config import DesignSpec, UnitSystem, read_design, read_items
 from alightsize.pipeline.landings import LandingSpec
 from alightsize.checks.rules import DEFAULT_RULES, RuleSet
 from alightsize.pipeline.items import RequiredFactor
 from alightsize.pipeline.members import member_item
+from alightsize.pipeline.outrigger import OUTRIGGER, outrigger_item, outrigger_span
 
 SCENE_TABLES = ("capsule", "cells", "legs", "terrain", "initial", "controls", "output")
 ALL_CONFIGURATIONS = "all"           # the combined envelope of App. III cell variants when none is named
@@ -193,6 +196,7 @@ class TelescopingStructure(Table):
 
     bearing_length: Annotated[float, Quantity("length")]
     friction: Annotated[float, Number("any")] = 0.05
+    body_radius: Annotated[float, Quantity("length")] | None = None     # outrigger out to [legs] radius
     note: str = ""
 
     @model_validator(mode="after")
@@ -259,16 +263,18 @@ def _loads_config(path: Path, name: str, structure: dict, scene: SceneFile, legs
     return cfg, (cases[-1].name, *(c[0] for c in combined))
 
 
+def _outrigger_span(path: Path, structure: dict, scene: SceneFile) -> float | None:
+    """The outrigger's length of a telescoping lander with `[structure] body_radius` (None: no outrigger)."""
+    if not isinstance(scene.legs, TelescopingLegs):
+        return None
+    s = validate(TelescopingStructure, structure, str(path), "structure")
+    return outrigger_span(scene.legs.radius, s.body_radius)
+
+
 def cell_curve(root: Node, cell: str) -> tuple[tuple[float, ...], tuple[float, ...]]:
     """(deflections m, forces N) of the `[cells.NAME]` table of a lander file as written (no `factor`)."""
     c = validate(Cell, root.table("cells").table(cell).data, root.file, f"cells.{cell}")
     return c.deflection, c.force
-
-
-def crush_stroke(deflection, force) -> tuple[float, float]:
-    """(crushing force, stroke to bottoming) of a cell curve: the largest force before the bottoming segment
-    and the deflection where that segment starts."""
-    return max(force[:-1]), deflection[-2]
 
 
 def _crushable(node: Node, root: Node, scene: SceneFile, mats: dict) -> Node:
@@ -286,12 +292,7 @@ def _crushable(node: Node, root: Node, scene: SceneFile, mats: dict) -> Node:
     if mat is None or mat.crush_strength is None or mat.stroke_fraction is None:
         raise node.error("material", "a crushable material (with crush_strength and stroke_fraction)",
                          repr(node.data.get("material")))
-    force, stroke = crush_stroke(scene.cells[cell].deflection, scene.cells[cell].force)
-    prism = {k: v for k, v in w.items() if k not in ("method", "cell")}
-    prism.update(method="prism", area=f"{force / mat.crush_strength!r} m^2",
-                 length=f"{stroke / mat.stroke_fraction!r} m")
-    prism.setdefault("note", f"cell {cell}: area = crushing force / crush strength, "
-                             f"length = stroke / {mat.stroke_fraction:g}")
+    prism = core_prism(w, scene.cells[cell].deflection, scene.cells[cell].force, mat, cell)
     return Node(node.file, node.path, {**node.data, "weight": prism}, root.context)
 
 
@@ -318,11 +319,16 @@ def read_lander(path: str | Path, overrides: dict | None = None, root: Node | No
     loads, envelopes = _loads_config(path, name, lander.structure, scene_file, scene.scene.legs, units)
     mats = library(extra)
     members = root.table("members", optional=True)
+    span = _outrigger_span(path, lander.structure, scene_file)
+    if span is not None and OUTRIGGER not in (members.data if members else {}):
+        raise root.error(f"members.{OUTRIGGER}", f"the outrigger from the body ([structure] body_radius) to the "
+                         f"legs' attachment, {span:.4g} m out: a member to check and weigh", "none")
     nodes = []
     if members:
         for key in members.data:
             m = members.table(key)
-            data = member_item(m, key, loads.telescoping, envelopes[-1], rules)
+            data = (outrigger_item(m, loads.telescoping, span, rules) if key == OUTRIGGER
+                    else member_item(m, key, loads.telescoping, envelopes[-1], rules))
             nodes.append(Node(root.file, m.path, data, root.context))
         members.finish()
     nodes += [_crushable(n, root, scene_file, mats) for n in root.tables("item", optional=True, label="name")]

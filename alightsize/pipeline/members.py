@@ -50,12 +50,12 @@ def _tube(load: dict, rules: Rules, moment: tuple[dict, str] | None, column: str
     return out
 
 
-def _plate(kind: str, load: dict, node: Node, rules: Rules) -> list[dict]:
+def _plate(kind: str, load: dict | str, node: Node, rules: Rules) -> list[dict]:
     return [{"kind": kind, "load": load, "load_radius": node.raw("load_radius"), "theory": rules.plate,
              "equivalent_radius": rules.equivalent_radius}]
 
 
-def _pin(loads: list[dict], node: Node) -> list[dict]:
+def _pin(loads: list[dict] | list[str], node: Node) -> list[dict]:
     """A pin of the member's rod section: double (or n-plane) shear, and bearing on its lug judged on the weaker
     of the pin's and the lug's material (Bruhn 1973 D1). `lug_material` is required: the lug is often the softer
     part (an aluminium lug on a steel pin), and the pin's own material would overstate the bearing allowable."""
