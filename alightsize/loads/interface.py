@@ -26,6 +26,7 @@ from typing import Callable, Sequence
 import numpy as np
 
 from alightsize_sim.articulated_cells import upper_angle
+from alightsize_sim.articulated_leg import ArticulatedLeg
 from alightsize_sim.articulated_statics import TrussAngles
 from alightsize_sim.landing import Result
 from alightsize_sim.rigid_body import quat_matrix
@@ -64,8 +65,8 @@ def body_footpads(res: Result, i: int, k: np.ndarray) -> np.ndarray:
 def telescoping_hardpoints(cfg: SceneConfig, res: Result) -> HardpointHistory:
     """Pivot and pads of every telescoping leg along the history (the module's statics). ValueError for other leg
     kinds, or pads at the pivot (a pad lever of 0 carries no moment)."""
-    legs = cfg.scene.legs
-    if not all(isinstance(lg, SimTelescopingLeg) for lg in legs):
+    legs = [lg for lg in cfg.scene.legs if isinstance(lg, SimTelescopingLeg)]
+    if len(legs) != len(cfg.scene.legs):
         raise ValueError("telescoping interface loads need telescoping legs")
     out = np.full(res.contact.shape + (2, 3), np.nan)
     for i, lg in enumerate(legs):
@@ -86,6 +87,7 @@ def _articulated(cfg: SceneConfig, res: Result, hist: Sequence[LegHistory]) -> H
     out = np.full(res.contact.shape + (2, 3), np.nan)
     for h in hist:
         leg = cfg.scene.legs[h.leg]
+        assert isinstance(leg, ArticulatedLeg)            # `leg_histories` refuses other kinds
         r = h.reactions
         eta = upper_angle(leg.geometry, h.psi)
         zero = np.zeros_like(h.psi)

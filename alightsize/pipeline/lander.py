@@ -16,7 +16,6 @@ from __future__ import annotations
 
 import itertools
 from dataclasses import dataclass
-from functools import partial
 from math import degrees, radians
 from pathlib import Path
 from typing import Annotated, Any
@@ -34,7 +33,7 @@ from alightsize.landings.dispersions import Dispersion
 from alightsize.landings.study import Run, Study, _sampled
 from alightsize.loads.config import Combined, Configuration, GridTable, LoadsConfig, Name, check_combined
 from alightsize.loads.envelopes import LegCase, default_grid
-from alightsize.loads.histories import dynamic_envelope, telescoping_dynamic_envelope
+from alightsize.loads.interface import landing_loads
 from alightsize.loads.quasi_static import TELESCOPING, validate_references
 from alightsize.loads.telescoping import TelescopingLeg
 from alightsize.model.envelope import Envelope
@@ -332,8 +331,8 @@ def read_lander(path: str | Path, overrides: dict | None = None, root: Node | No
     read_items(tuple(nodes), mats, req.required, root, rules)
     root.finish()
     study = landing_cases(document, name, req, len(scene.scene.legs), scene_over)
-    member_loads = (partial(telescoping_dynamic_envelope, leg=loads.telescoping) if loads.telescoping
-                    else partial(dynamic_envelope, truss=loads.cases[0].truss))
+    member_loads = landing_loads(truss=None if loads.telescoping else loads.cases[0].truss,
+                                 telescoping=loads.telescoping)
     landings = LandingSpec(study, envelopes, "criteria", member_loads)
     spec = DesignSpec(path, name, title, scene.scene.mass, len(scene.scene.legs), units, req.required, req.decimals,
                       mats, tuple(nodes), loads, landings, req.weight_goal, rules)
