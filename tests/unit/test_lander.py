@@ -19,7 +19,9 @@ from alightsize.pipeline.design import run_design
 from conftest import ROOT
 
 LUNAR = ROOT / "examples" / "lunar_lander.toml"
-FEW = {"samples = 100": "samples = 4"}           # the 16 envelope corners and 4 Monte Carlo landings
+_TEXT = LUNAR.read_text()
+TERRAIN = _TEXT[_TEXT.index("[requirements.terrain]"):_TEXT.index("[requirements.monte_carlo]")]
+FEW = {"samples = 100": "samples = 4", TERRAIN: ""}   # the 32 envelope corners and 4 Monte Carlo landings
 
 
 def variant(tmp_path: Path, subs: dict, name: str = "lander.toml") -> Path:
@@ -39,10 +41,11 @@ def lunar(tmp_path_factory):
 
 
 def test_reading_runs_nothing_and_derives_the_cases():
-    """read_lander only reads: 16 corners (2 horizontal speeds x 2 rolls x 2 slopes x 2 frictions x 1 vertical
-    range of 2) + 100 Monte Carlo landings, and the App. III free body from the lander's own cells."""
+    """read_lander only reads: 32 corners (2 horizontal speeds x 2 rolls x 2 slopes x 2 frictions x 2 vertical
+    speeds) + 100 Monte Carlo landings + the 16 corners at 3 m/s on a rock and into a hole, and the App. III
+    free body from the lander's own cells."""
     lander = alightsize.read_lander(LUNAR)
-    assert len(lander.study.runs) == 2 * 2 * 2 * 2 * 2 + 100
+    assert len(lander.study.runs) == 2 * 2 * 2 * 2 * 2 + 100 + 2 * 16
     leg = lander.spec.loads.telescoping
     assert (leg.axial_crush, leg.rotational_crush, leg.pad_lever, leg.length) == (8000.0, 4000.0, 0.8, 1.6)
     assert lander.scene.scene.gravity[2] == pytest.approx(-1.62)     # NASA lunar fact sheet, level nominal scene
