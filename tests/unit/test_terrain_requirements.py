@@ -83,3 +83,46 @@ def test_bad_terrain_requirements_exit_2_naming_the_key(tmp_path, capsys, table,
     assert key in str(err.value) and str(p) in str(err.value)
     assert main(["design", str(p), "--out", str(tmp_path / "o")]) == 2
     assert key in capsys.readouterr().err
+
+
+SEARCH = """
+[requirements.envelope]
+vertical_speed = "3 m/s"
+
+[requirements.terrain]
+rock_height = "5 cm"
+hole_depth = "5 cm"
+
+[requirements.monte_carlo]
+samples = 2
+seed = 5
+
+[synthesis]
+seed = 11
+generations = 0
+population = 2
+check_samples = 2
+
+[synthesis.free]
+"cells.axial.crush_force" = ["4 kN", "16 kN"]
+"""
+
+
+def test_synthesize_lands_the_terrain_cases_as_corners(tmp_path):
+    # The search reads its candidates as lander files, so each candidate lands the envelope's 2 corners (one
+    # descent speed, level, the roll at 0 and 45 deg) and their 2 rock and 2 hole repeats as its screening
+    # corners before any Monte Carlo landing: the store holds as many rock as hole landings, 2 per candidate.
+    import sqlite3
+    from alightsize.synthesis.search import synthesize
+    text = LUNAR.read_text()
+    p = tmp_path / "small.toml"
+    p.write_text(text[:text.index("[requirements.envelope]")].replace('t_final = "20 s"', 't_final = "3 s"') + SEARCH)
+    synthesize(p, tmp_path / "o", trade=False, backend="serial")
+    with sqlite3.connect(tmp_path / "o" / "runs.sqlite") as db:
+        cols = [r[1] for r in db.execute("PRAGMA table_info(runs)")]
+        rocks = db.execute("SELECT COUNT(*) FROM runs WHERE terrain_rocks_0 IS NOT NULL").fetchone()[0]
+        holes = db.execute("SELECT COUNT(*) FROM runs WHERE terrain_steps_0 IS NOT NULL").fetchone()[0]
+        plain = db.execute("SELECT COUNT(*) FROM runs WHERE terrain_rocks_0 IS NULL AND terrain_steps_0 IS NULL "
+                           "AND run_id IS NOT NULL").fetchone()[0]
+    assert "terrain_rocks_0" in cols and rocks > 0 and rocks % 2 == 0 and holes == rocks
+    assert plain >= rocks                  # the open-ground corners of the same candidates, and Monte Carlo
