@@ -208,8 +208,10 @@ def rest_footpad(leg: SimTelescopingLeg | ArticulatedLeg) -> np.ndarray:
     m in principal axes from the centre of gravity."""
     if isinstance(leg, ArticulatedLeg):
         s = np.array(articulated_footpad(leg.geometry, 0.0, 0.0, leg.psi0), float)
-    else:
+    elif isinstance(leg, SimTelescopingLeg):
         s = np.array([0.0, 0.0, -leg.rho])
+    else:
+        raise ValueError(f"no rest footpad for a leg of kind {type(leg).__name__}")
     return leg.attach + leg.to_body @ s
 
 
