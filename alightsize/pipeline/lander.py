@@ -307,6 +307,9 @@ def _loads_config(path: Path, name: str, structure: dict, scene: SceneFile, legs
         if not leg.pads:
             raise InputError(file, "legs.pad_angles", "rotational pads on the telescoping leg (App. III free body)",
                              "none")
+        if not leg.pad_lever > 0:
+            raise InputError(file, "legs.pad_lever", "a pad lever above 0 (the pads react the leg's moment about "
+                             "its pivot: App. III free body)", "0 m")
         tele = TelescopingLeg(_crush(leg.axial.curve), _crush(leg.pads[0].curve), leg.pad_lever, leg.rho,
                               s.bearing_length, s.friction)
         return LoadsConfig(path, f"{name} telescoping leg (App. III free body)", units, default_grid(), (), (), tele), \

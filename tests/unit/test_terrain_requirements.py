@@ -75,9 +75,10 @@ def test_the_rock_is_under_leg_1_and_the_hole_takes_leg_1_only(tmp_path):
     ('[requirements.terrain]\nsoil = "cheese"\n', "requirements.terrain.soil"),
     ('[requirements.terrain]\nsoil = "lunar-regolith"\n', "requirements.terrain.soil"),   # massless footpads
     ('[requirements.terrain]\nrock = "0.3 m"\n', "requirements.terrain.rock"),
+    ('', "legs.pad_lever"),                  # with the substitution below: pads at the pivot carry no moment
 ])
-def test_bad_terrain_requirements_exit_2_naming_the_key(tmp_path, capsys, table, key):
-    p = variant(tmp_path, {}, table)
+def test_bad_values_exit_2_naming_the_key(tmp_path, capsys, table, key):
+    p = variant(tmp_path, {'pad_lever = "0.8 m"': 'pad_lever = "0 m"'} if key == "legs.pad_lever" else {}, table)
     with pytest.raises(InputError) as err:
         alightsize.read_lander(p)
     assert key in str(err.value) and str(p) in str(err.value)
