@@ -1,5 +1,6 @@
 """Interface loads: the force each leg puts on the body at each of its hardpoints along a landing (body principal
-axes), and each hardpoint's largest force: what the designer of the deck the legs attach to needs.
+axes), and each hardpoint's largest force (reported along the geometric body axes, as XDD): what the designer of
+the deck the legs attach to needs.
 
 Every leg is massless between the body and its footpad, so at every step its hardpoint forces sum to the force
 the leg carries (the history's `leg_force`, the ground force on the body through that leg) and their moments
@@ -111,12 +112,14 @@ def tripod_hardpoints(res: Result, legs: Sequence[TripodLeg]) -> HardpointHistor
     return HardpointHistory(TRIPOD_HARDPOINTS, tripod_member_histories(res, legs).hardpoints)
 
 
-def interface_extremes(h: HardpointHistory, t: np.ndarray) -> list[dict]:
+def interface_extremes(h: HardpointHistory, t: np.ndarray, to_geo: np.ndarray | None = None) -> list[dict]:
     """Per leg and hardpoint its largest force over the history: {leg (1..), hardpoint, force_N (magnitude),
-    components_N (body principal axes, at that step), t_s}; legs never on the ground are left out. Ties go to
-    the earliest step."""
+    components_N (at that step, along the body's geometric axes with `to_geo`, the principal-to-geometric matrix
+    of the scene, else its principal axes), t_s}; legs never on the ground are left out. Ties go to the earliest
+    step."""
     rows = []
-    mag = np.linalg.norm(h.forces, axis=-1)
+    forces = h.forces if to_geo is None else h.forces @ np.asarray(to_geo).T
+    mag = np.linalg.norm(forces, axis=-1)
     for i in range(h.forces.shape[1]):
         for j, name in enumerate(h.names):
             m = mag[:, i, j]
@@ -124,22 +127,22 @@ def interface_extremes(h: HardpointHistory, t: np.ndarray) -> list[dict]:
                 continue
             k = int(np.nanargmax(m))
             rows.append({"leg": i + 1, "hardpoint": name, "force_N": float(m[k]),
-                         "components_N": [float(x) for x in h.forces[k, i, j]], "t_s": float(t[k])})
+                         "components_N": [float(x) for x in forces[k, i, j]], "t_s": float(t[k])})
     return rows
 
 
 def articulated_landing_loads(cfg: SceneConfig, res: Result, truss: TrussAngles) -> dict[str, list[dict]]:
     """A landing's stored loads (alightsize.landings.sweep): `member_loads` (`dynamic_envelope`) and
-    `interface_loads` (`interface_extremes`) of its articulated legs."""
+    `interface_loads` (`interface_extremes`, along the body's geometric axes) of its articulated legs."""
     hist = leg_histories(cfg.scene, res)
     return {"member_loads": articulated_envelope(hist, res, truss),
-            "interface_loads": interface_extremes(_articulated(cfg, res, hist), res.t)}
+            "interface_loads": interface_extremes(_articulated(cfg, res, hist), res.t, cfg.to_geometric)}
 
 
 def telescoping_landing_loads(cfg: SceneConfig, res: Result, leg: TelescopingFreeBody) -> dict[str, list[dict]]:
     """A landing's stored loads: `member_loads` (`telescoping_dynamic_envelope`) and `interface_loads`."""
     return {"member_loads": telescoping_dynamic_envelope(cfg, res, leg),
-            "interface_loads": interface_extremes(telescoping_hardpoints(cfg, res), res.t)}
+            "interface_loads": interface_extremes(telescoping_hardpoints(cfg, res), res.t, cfg.to_geometric)}
 
 
 def landing_loads(truss: TrussAngles | None = None,

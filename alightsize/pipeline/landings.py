@@ -87,8 +87,8 @@ class Landings:
     @cached_property
     def interface_loads(self) -> pd.DataFrame:
         """Each body hardpoint's largest force over every landing (the interface loads; docs/contracts.md): one row
-        per leg and hardpoint (INTERFACE_COLUMNS), the force's magnitude and its components in the body's
-        principal axes at that instant, the time into the landing and the landing; ties go to the earlier
+        per leg and hardpoint (INTERFACE_COLUMNS), the force's magnitude and its components along the body's
+        geometric axes at that instant, the time into the landing and the landing; ties go to the earlier
         landing."""
         best: dict[tuple[int, str], dict] = {}
         order: dict[str, int] = {}                        # hardpoints in the order the leg kind lists them

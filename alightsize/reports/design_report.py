@@ -187,8 +187,8 @@ def _landings(cfg, system: str) -> dict | None:
 
 
 def _interface(res: DesignResult, system: str) -> list[dict]:
-    """The interface loads (the "interface_loads" table): each body hardpoint's largest force, its components in
-    the body's principal axes and the landing that produced it."""
+    """The interface loads (the "interface_loads" table): each body hardpoint's largest force, its components along
+    the body's geometric axes and the landing that produced it."""
     tables = res.to_pandas()
     if "interface_loads" not in tables:
         return []
