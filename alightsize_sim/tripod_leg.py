@@ -19,7 +19,9 @@ carries no torsion); small deflections of the members themselves (equilibrium on
 struts' lengths changing only through their cartridges). Strut forces are tension positive, lengths L =
 (primary Lp, secondary l1, l2), the footpad P. Virtual work closes: F . dP = sum T_i dL_i (Hibbeler, Statics,
 sec. 11.2), so the strut forces are T = G^-T F with G = dL/dP, and the footpad force of given strut forces is
-G^T T. Pure numpy; the simulator does not use this module yet (docs/notes/tripod-design.md).
+G^T T. The kinematics are scalar, allocation-free compiled functions on the leg's packed array (`packed`: the
+hardpoints, the rest lengths, and knee offset, secondary_attach, branch), which the simulator's tripod leg
+(tripod_kernel.py) calls too; the numpy functions here wrap them.
 """
 
 from __future__ import annotations
@@ -28,6 +30,7 @@ from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
+from numba import njit
 
 from .crush_cell import CellModel
 
@@ -113,14 +116,13 @@ class TripodLeg:
     @cached_property
     def rest_lengths(self) -> np.ndarray:
         """Strut lengths at rest (Lp, l1, l2), m."""
-        return strut_lengths(self, self.footpad)
+        return self.packed[3].copy()
 
     @cached_property
     def branch(self) -> float:
         """+1 or -1: the side of the hardpoints' plane (normal (A1 - Ap) x (A2 - Ap)) the joint lies on at rest;
         the kinematics keep it (the branch below the body)."""
-        a, b, c = self.hardpoints
-        return float(np.sign(np.cross(b - a, c - a) @ (junction(self, self.footpad) - a)))
+        return float(self.packed[4, 2])
 
     @property
     def cells(self) -> tuple[CellModel, ...]:
@@ -128,75 +130,151 @@ class TripodLeg:
         c, t = self.secondary_compression, self.secondary_tension
         return (self.primary, c[0], t[0], c[1], t[1])
 
+    @cached_property
+    def packed(self) -> np.ndarray:
+        """(5, 3): the hardpoints (primary, secondaries), the rest lengths (Lp, l1, l2) and (knee offset a,
+        secondary_attach, branch): what the compiled kinematics take."""
+        t = np.zeros((5, 3))
+        t[:3] = self.hardpoints
+        t[4, 0], t[4, 1] = self.knee_offset, self.secondary_attach
+        t[3] = strut_lengths_at(t, *self.footpad)
+        t[4, 2] = trilateration_side(t, *junction_at(t, *self.footpad))
+        return t
+
 
 def _triple(leg: TripodLeg, P: np.ndarray) -> float:
     """u . (e1 x e2): the primary's and the secondaries' unit vectors at the joint (0 when coplanar)."""
-    u = _unit(P - leg.primary_hardpoint)[0]
-    j = junction(leg, P)
-    e1, e2 = (_unit(j - h)[0] for h in leg.secondary_hardpoints)
-    return float(u @ np.cross(e1, e2))
+    return fold_at(leg.packed, *np.asarray(P, float))
+
+
+@njit(cache=True)
+def _unit3(x0, x1, x2):
+    """(unit vector, length) of x; the zero vector for a zero x."""
+    n = np.sqrt(x0 * x0 + x1 * x1 + x2 * x2)
+    if n == 0.0:
+        return 0.0, 0.0, 0.0, 0.0
+    return x0 / n, x1 / n, x2 / n, n
+
+
+@njit(cache=True)
+def junction_at(t, p0, p1, p2):
+    """The joint (tuple) for the footpad at (p0, p1, p2), leg packed as t (`TripodLeg.packed`): the footpad
+    itself (inverted tripod, t[4, 1] = 0) or the knee, a = t[4, 0] from the primary hardpoint along the primary."""
+    if t[4, 1] <= 0.0:
+        return p0, p1, p2
+    u0, u1, u2, _ = _unit3(p0 - t[0, 0], p1 - t[0, 1], p2 - t[0, 2])
+    a = t[4, 0]
+    return t[0, 0] + a * u0, t[0, 1] + a * u1, t[0, 2] + a * u2
+
+
+@njit(cache=True)
+def strut_lengths_at(t, p0, p1, p2):
+    """Inverse kinematics (Lp, l1, l2) for the footpad at (p0, p1, p2)."""
+    j0, j1, j2 = junction_at(t, p0, p1, p2)
+    return (_unit3(p0 - t[0, 0], p1 - t[0, 1], p2 - t[0, 2])[3], _unit3(j0 - t[1, 0], j1 - t[1, 1], j2 - t[1, 2])[3],
+            _unit3(j0 - t[2, 0], j1 - t[2, 1], j2 - t[2, 2])[3])
+
+
+@njit(cache=True)
+def length_jacobian_at(t, p0, p1, p2):
+    """G = dL/dP at the footpad (p0, p1, p2), row by row as a 9-tuple. Inverted tripod: the unit strut vectors
+    u, e1, e2 (hardpoint to footpad). Cantilever: dLp/dP = u, dl_i/dP = (a/Lp) (e_i - (e_i . u) u), since the
+    knee moves by (a/Lp) (I - u u^T) dP."""
+    u0, u1, u2, Lp = _unit3(p0 - t[0, 0], p1 - t[0, 1], p2 - t[0, 2])
+    j0, j1, j2 = junction_at(t, p0, p1, p2)
+    a0, a1, a2, _ = _unit3(j0 - t[1, 0], j1 - t[1, 1], j2 - t[1, 2])
+    b0, b1, b2, _ = _unit3(j0 - t[2, 0], j1 - t[2, 1], j2 - t[2, 2])
+    if t[4, 1] <= 0.0:
+        return u0, u1, u2, a0, a1, a2, b0, b1, b2
+    k = t[4, 0] / Lp
+    ca, cb = a0 * u0 + a1 * u1 + a2 * u2, b0 * u0 + b1 * u1 + b2 * u2
+    return (u0, u1, u2, k * (a0 - ca * u0), k * (a1 - ca * u1), k * (a2 - ca * u2), k * (b0 - cb * u0),
+            k * (b1 - cb * u1), k * (b2 - cb * u2))
+
+
+@njit(cache=True)
+def fold_at(t, p0, p1, p2):
+    """u . (e1 x e2) at the joint for the footpad at (p0, p1, p2): 0 when the struts meet there coplanar."""
+    u0, u1, u2, _ = _unit3(p0 - t[0, 0], p1 - t[0, 1], p2 - t[0, 2])
+    j0, j1, j2 = junction_at(t, p0, p1, p2)
+    a0, a1, a2, _ = _unit3(j0 - t[1, 0], j1 - t[1, 1], j2 - t[1, 2])
+    b0, b1, b2, _ = _unit3(j0 - t[2, 0], j1 - t[2, 1], j2 - t[2, 2])
+    return u0 * (a1 * b2 - a2 * b1) + u1 * (a2 * b0 - a0 * b2) + u2 * (a0 * b1 - a1 * b0)
+
+
+@njit(cache=True)
+def trilateration_side(c, x0, x1, x2):
+    """+1 or -1: the side of the plane of the centres c[0:3] (normal (c1 - c0) x (c2 - c0)) the point x lies on
+    (0 on it)."""
+    n0 = (c[1, 1] - c[0, 1]) * (c[2, 2] - c[0, 2]) - (c[1, 2] - c[0, 2]) * (c[2, 1] - c[0, 1])
+    n1 = (c[1, 2] - c[0, 2]) * (c[2, 0] - c[0, 0]) - (c[1, 0] - c[0, 0]) * (c[2, 2] - c[0, 2])
+    n2 = (c[1, 0] - c[0, 0]) * (c[2, 1] - c[0, 1]) - (c[1, 1] - c[0, 1]) * (c[2, 0] - c[0, 0])
+    return np.sign(n0 * (x0 - c[0, 0]) + n1 * (x1 - c[0, 1]) + n2 * (x2 - c[0, 2]))
+
+
+@njit(cache=True)
+def trilaterate_at(c, r0, r1, r2, branch):
+    """The point (tuple) at distances (r0, r1, r2) from the centres c[0:3] on the `branch` side of their plane:
+    subtracting the sphere equations pairwise gives its coordinates in the centres' plane, the first equation
+    its height. NaN when the spheres do not meet."""
+    ex0, ex1, ex2, d = _unit3(c[1, 0] - c[0, 0], c[1, 1] - c[0, 1], c[1, 2] - c[0, 2])
+    w0, w1, w2 = c[2, 0] - c[0, 0], c[2, 1] - c[0, 1], c[2, 2] - c[0, 2]
+    i = ex0 * w0 + ex1 * w1 + ex2 * w2
+    ey0, ey1, ey2, j = _unit3(w0 - i * ex0, w1 - i * ex1, w2 - i * ex2)
+    ez0, ez1, ez2 = ex1 * ey2 - ex2 * ey1, ex2 * ey0 - ex0 * ey2, ex0 * ey1 - ex1 * ey0
+    x = (r0 * r0 - r1 * r1 + d * d) / (2.0 * d)
+    y = (r0 * r0 - r2 * r2 + i * i + j * j - 2.0 * i * x) / (2.0 * j)
+    z2 = r0 * r0 - x * x - y * y
+    if z2 < 0.0:
+        return np.nan, np.nan, np.nan
+    z = branch * np.sqrt(z2)
+    return (c[0, 0] + x * ex0 + y * ey0 + z * ez0, c[0, 1] + x * ex1 + y * ey1 + z * ez1,
+            c[0, 2] + x * ex2 + y * ey2 + z * ez2)
+
+
+@njit(cache=True)
+def footpad_at(t, Lp, l1, l2):
+    """Forward kinematics (tuple): the footpad for strut lengths (Lp, l1, l2), NaN where none (the spheres do
+    not meet, or a cantilever primary at or above its knee). The joint is the intersection of the spheres about
+    the hardpoints, radii (Lp or a, l1, l2), on the rest branch; the cantilever's footpad is then Lp along the
+    primary through the knee."""
+    cant = t[4, 1] > 0.0
+    a = t[4, 0]
+    j0, j1, j2 = trilaterate_at(t, a if cant else Lp, l1, l2, t[4, 2])
+    if not cant:
+        return j0, j1, j2
+    if not Lp > a:
+        return np.nan, np.nan, np.nan
+    k = Lp / a
+    return t[0, 0] + k * (j0 - t[0, 0]), t[0, 1] + k * (j1 - t[0, 1]), t[0, 2] + k * (j2 - t[0, 2])
 
 
 def junction(leg: TripodLeg, P) -> np.ndarray:
     """Where the secondaries meet the primary for the footpad at P: the footpad itself (inverted tripod) or the
     knee, a = (1 - s) L0 from the hardpoint along the primary (cantilever)."""
-    P = np.asarray(P, float)
-    if not leg.is_cantilever:
-        return P
-    return leg.primary_hardpoint + leg.knee_offset * _unit(P - leg.primary_hardpoint)[0]
+    return np.array(junction_at(leg.packed, *np.asarray(P, float)))
 
 
 def strut_lengths(leg: TripodLeg, P) -> np.ndarray:
     """Inverse kinematics: (Lp, l1, l2) for the footpad at P (m)."""
-    P = np.asarray(P, float)
-    j = junction(leg, P)
-    return np.array([np.linalg.norm(P - leg.primary_hardpoint), *(np.linalg.norm(j - h)
-                                                                   for h in leg.secondary_hardpoints)])
-
-
-def _trilaterate(c: np.ndarray, r: np.ndarray, branch: float) -> np.ndarray:
-    """The point at distances r from the centres c (3, 3) on the `branch` side of their plane: subtracting the
-    sphere equations pairwise gives its coordinates in the centres' plane, the first equation its height."""
-    ex, d = _unit(c[1] - c[0])
-    w = c[2] - c[0]
-    i = ex @ w
-    ey, j = _unit(w - i * ex)
-    ez = np.cross(ex, ey)
-    x = (r[0] ** 2 - r[1] ** 2 + d * d) / (2.0 * d)
-    y = (r[0] ** 2 - r[2] ** 2 + i * i + j * j - 2.0 * i * x) / (2.0 * j)
-    z2 = r[0] ** 2 - x * x - y * y
-    if z2 < 0.0:
-        raise ValueError(f"strut lengths {tuple(r)} m do not meet: no position of the joint")
-    return c[0] + x * ex + y * ey + branch * np.sqrt(z2) * ez
+    return np.array(strut_lengths_at(leg.packed, *np.asarray(P, float)))
 
 
 def footpad_position(leg: TripodLeg, lengths) -> np.ndarray:
-    """Forward kinematics: the footpad for strut lengths (Lp, l1, l2). The joint (footpad or knee) is the
-    intersection of the spheres about the hardpoints, radii (Lp or a, l1, l2), on the rest branch; the
-    cantilever's footpad is then Lp along the primary through the knee."""
+    """Forward kinematics: the footpad for strut lengths (Lp, l1, l2) (footpad_at)."""
     L = np.asarray(lengths, float)
-    a = leg.knee_offset
-    r0 = a if leg.is_cantilever else L[0]
-    j = _trilaterate(leg.hardpoints, np.array([r0, L[1], L[2]]), leg.branch)
-    if not leg.is_cantilever:
-        return j
-    if not L[0] > a:
-        raise ValueError(f"primary length {L[0]:.6g} m: at or above the knee ({a:.6g} m from the hardpoint)")
-    return leg.primary_hardpoint + (L[0] / a) * (j - leg.primary_hardpoint)
+    P = np.array(footpad_at(leg.packed, L[0], L[1], L[2]))
+    if not np.all(np.isfinite(P)):
+        if leg.is_cantilever and not L[0] > leg.knee_offset:
+            raise ValueError(f"primary length {L[0]:.6g} m: at or above the knee ({leg.knee_offset:.6g} m from the "
+                             "hardpoint)")
+        raise ValueError(f"strut lengths {tuple(L)} m do not meet: no position of the joint")
+    return P
 
 
 def length_jacobian(leg: TripodLeg, P) -> np.ndarray:
-    """G = dL/dP (3 x 3) at the footpad P. Inverted tripod: rows are the unit strut vectors u, e1, e2
-    (hardpoint to footpad). Cantilever: dLp/dP = u, dl_i/dP = (a/Lp) (e_i - (e_i . u) u), since the knee moves
-    by (a/Lp) (I - u u^T) dP."""
-    P = np.asarray(P, float)
-    u, Lp = _unit(P - leg.primary_hardpoint)
-    j = junction(leg, P)
-    e = [_unit(j - h)[0] for h in leg.secondary_hardpoints]
-    if not leg.is_cantilever:
-        return np.array([u, *e])
-    k = leg.knee_offset / Lp
-    return np.array([u, *(k * (ei - (ei @ u) * u) for ei in e)])
+    """G = dL/dP (3 x 3) at the footpad P (length_jacobian_at)."""
+    return np.array(length_jacobian_at(leg.packed, *np.asarray(P, float))).reshape(3, 3)
 
 
 def footpad_jacobian(leg: TripodLeg, lengths) -> np.ndarray:
