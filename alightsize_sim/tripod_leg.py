@@ -20,8 +20,16 @@ struts' lengths changing only through their cartridges). Strut forces are tensio
 (primary Lp, secondary l1, l2), the footpad P. Virtual work closes: F . dP = sum T_i dL_i (Hibbeler, Statics,
 sec. 11.2), so the strut forces are T = G^-T F with G = dL/dP, and the footpad force of given strut forces is
 G^T T. The kinematics are scalar, allocation-free compiled functions on the leg's packed array (`packed`: the
-hardpoints, the rest lengths, and knee offset, secondary_attach, branch), which the simulator's tripod leg
-(tripod_kernel.py) calls too; the numpy functions here wrap them.
+hardpoints, the rest lengths, and knee offset, secondary_attach, branch), which the simulator's leg functions
+below call too (the leg's row of geo[10], docs/simulator.md); the numpy functions here wrap them.
+
+In the simulator the leg is massless with its footpad held at P (the slip search or the footpad's state places
+it): the strut lengths follow from P in closed form, the five cell deflections and rates from them and G, and the
+force on the capsule is X = G^T T, whose power X . (footpad velocity relative to the body) equals the cells'
+power exactly (virtual work), so the energy audit closes with no extra term. The leg's shape is its three strut
+lengths (on the ground those of the last accepted step; in the air those it left with: a free leg whose struts
+sit between their compression and tension sets is a mechanism, and keeps them). It lifts off where the ground's
+normal push falls to zero (`slack`).
 """
 
 from __future__ import annotations
@@ -33,6 +41,9 @@ import numpy as np
 from numba import njit
 
 from .crush_cell import CellModel
+from .telescoping_leg import cell_force
+from .terrain import relief
+from .vec3 import cross, mtv, mv
 
 MIN_DET = 0.02   # least |u . (e1 x e2)| of the strut directions at the joint (1 when orthogonal, 0 when coplanar)
 
@@ -94,6 +105,16 @@ class TripodLeg:
         if self.is_cantilever and self.primary.curve.deflection[-1] >= s * self.rest_primary_length:
             raise ValueError(f"primary: its curve runs to {self.primary.curve.deflection[-1]:.4g} m of stroke, at or "
                              f"past the knee ({s * self.rest_primary_length:.4g} m up from the footpad)")
+
+    @property
+    def attach(self) -> np.ndarray:
+        """The primary hardpoint: where the leg stands round the capsule (its azimuth orders the legs)."""
+        return self.primary_hardpoint
+
+    @property
+    def reach(self) -> float:
+        """A length scale of the leg (m): its primary's rest length."""
+        return self.rest_primary_length
 
     @property
     def is_cantilever(self) -> bool:
@@ -398,3 +419,75 @@ def tripod_from_params(footpad_radius: float, hardpoint_radius: float, hardpoint
                      on_circle(footpad_radius, azimuth, footpad_height), secondary_attach, primary,
                      (secondary_compression, secondary_compression), (secondary_tension, secondary_tension),
                      footpad_diameter, footpad_mass)
+
+
+@njit(cache=True)
+def leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
+    """Forces of tripod leg i (packed as geo[10][i]) with its footpad held at P (terrain axes) under a capsule
+    at r, attitude R (principal -> terrain), velocity v (terrain), rate w (principal); `shape` is unused. Writes
+    the five cell deflections (`cell_deflections`), forces and rates and the force X = G^T T on the capsule
+    (principal axes), T = (-f0, f2 - f1, f4 - f3); returns (cells' power, Lp, l1, l2): the strut lengths are the
+    leg's shape."""
+    t = geo[10][i]
+    b0, b1, b2 = mtv(R, P[0] - r[0], P[1] - r[1], P[2] - r[2])     # CG -> footpad, principal axes
+    c0, c1, c2 = cross(w[0], w[1], w[2], b0, b1, b2)
+    s0, s1, s2 = mtv(R, v[0], v[1], v[2])
+    e0, e1, e2 = -c0 - s0, -c1 - s1, -c2 - s2                       # its rate with the footpad held
+    Lp, l1, l2 = strut_lengths_at(t, b0, b1, b2)
+    g = length_jacobian_at(t, b0, b1, b2)
+    dp = g[0] * e0 + g[1] * e1 + g[2] * e2                          # dL/dt = G (footpad rate)
+    d1 = g[3] * e0 + g[4] * e1 + g[5] * e2
+    d2 = g[6] * e0 + g[7] * e1 + g[8] * e2
+    x0, x1, x2 = t[3, 0] - Lp, t[3, 1] - l1, t[3, 2] - l2
+    defl[0], defl[1], defl[2], defl[3], defl[4] = x0, x1, -x1, x2, -x2
+    rte[0], rte[1], rte[2], rte[3], rte[4] = -dp, -d1, d1, -d2, d2
+    power = 0.0
+    for j in range(5):
+        frc[j] = cell_force(cells, i, j, mem, defl[j], rte[j])
+        power += frc[j] * rte[j]
+    tp, t1, t2 = -frc[0], frc[2] - frc[1], frc[4] - frc[3]
+    X[0] = g[0] * tp + g[3] * t1 + g[6] * t2
+    X[1] = g[1] * tp + g[4] * t1 + g[7] * t2
+    X[2] = g[2] * tp + g[5] * t1 + g[8] * t2
+    return power, Lp, l1, l2
+
+
+@njit(cache=True)
+def free_footpad(geo, cells, i, mem, shape, r, R):
+    """Terrain position (tuple) of the footpad of tripod leg i whose struts have the lengths `shape` (cells and
+    mem unused: the telescoping leg's interface)."""
+    f0, f1, f2 = footpad_at(geo[10][i], shape[0], shape[1], shape[2])
+    x0, x1, x2 = mv(R, f0, f1, f2)
+    return r[0] + x0, r[1] + x1, r[2] + x2
+
+
+@njit(cache=True)
+def lift_shape(geo, cells, i, mem, alpha, beta, psi, main, r, R):
+    """Stored free geometry of a tripod leg lifting off: the strut lengths (Lp, l1, l2) leg_force returned as its
+    (alpha, beta, psi) (main, r, R unused: the other kinds' interface)."""
+    return alpha, beta, psi
+
+
+@njit(cache=True)
+def slack(geo, cells, i, mem, defl, X, P, R):
+    """The ground's normal push on tripod leg i's footpad over its primary's unloading rate (m): the leg lifts off
+    where it falls through zero, the footpad pulled off the terrain (the surface's normal under P, terrain.relief;
+    X the force on the capsule, principal axes)."""
+    f0, f1, f2 = mv(R, X[0], X[1], X[2])
+    _, n0, n1, n2 = relief(geo[9], P[0], P[1])
+    return (f0 * n0 + f1 * n1 + f2 * n2) / cells[3][i, 0]
+
+
+@njit(cache=True)
+def fold(geo, i, P, r, R):
+    """|u . (e1 x e2)| at tripod leg i's joint with its footpad at P (terrain axes): below MIN_DET the struts
+    fold flat (no stiffness across their plane; the trilateration's branch could flip)."""
+    b0, b1, b2 = mtv(R, P[0] - r[0], P[1] - r[1], P[2] - r[2])
+    return abs(fold_at(geo[10][i], b0, b1, b2))
+
+
+def strut_axial_forces(forces: np.ndarray) -> np.ndarray:
+    """Strut axial forces (N, tension positive; primary, secondary 1, secondary 2) from the five cell forces in
+    `TripodLeg.cells` order (last axis): T = (-f0, f2 - f1, f4 - f3)."""
+    f = np.asarray(forces, float)
+    return np.stack((-f[..., 0], f[..., 2] - f[..., 1], f[..., 4] - f[..., 3]), axis=-1)
