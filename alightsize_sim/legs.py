@@ -57,8 +57,7 @@ def pack(legs: tuple[TelescopingLeg | ArticulatedLeg | TripodLeg, ...]):
             d, f, k, c, y = cell.arrays
             cd[i, j, :len(d)], cf[i, j, :len(d)], cn[i, j] = d, f, len(d)
             ck[i, j], cc[i, j], cy[i, j] = k, c, y
-    to_body = np.array([np.eye(3) if isinstance(leg, TripodLeg) else leg.to_body for leg in legs], float)
-    geo = (np.array([leg.attach for leg in legs], float), to_body, reach,
+    geo = (np.array([leg.attach for leg in legs], float), np.array([leg.to_body for leg in legs], float), reach,
            lever, angles if np.any(kind == TELESCOPING) else None, np.array([len(leg.cells) - 1 for leg in legs],
                                                                              np.int64), small, kind,
            art if np.any(kind == ARTICULATED) else None, tri if np.any(kind == TRIPOD) else None)

@@ -112,6 +112,11 @@ class TripodLeg:
         return self.primary_hardpoint
 
     @property
+    def to_body(self) -> np.ndarray:
+        """Leg axes to principal axes: a tripod's leg axes are the principal axes."""
+        return np.eye(3)
+
+    @property
     def reach(self) -> float:
         """A length scale of the leg (m): its primary's rest length."""
         return self.rest_primary_length
@@ -382,13 +387,13 @@ def tripod_from_params(footpad_radius: float, hardpoint_radius: float, hardpoint
                        secondary_spread: float, primary: CellModel, secondary_compression: CellModel,
                        secondary_tension: CellModel, footpad_diameter: float, primary_angle: float | None = None,
                        footpad_height: float | None = None, secondary_attach: float = 0.0,
-                       secondary_height: float | None = None, azimuth: float = 0.0,
-                       footpad_mass: float = 0.0) -> TripodLeg:
+                       secondary_height: float | None = None, secondary_radius: float | None = None,
+                       azimuth: float = 0.0, footpad_mass: float = 0.0) -> TripodLeg:
     """A leg in the half-plane at `azimuth` (rad, from principal axis 1 toward 2): primary hardpoint at
     `hardpoint_radius` from the capsule axis and `hardpoint_height` along it (m), footpad at `footpad_radius`
     and either `footpad_height` or the primary's angle from the capsule axis `primary_angle` (rad, outward,
-    in (0, pi/2)); secondary hardpoints on the hardpoint circle at azimuth +-`secondary_spread` (rad, in (0, pi))
-    about the leg's, at `secondary_height` (the primary hardpoint's if None); both secondaries get the same
+    in (0, pi/2)); secondary hardpoints at azimuth +-`secondary_spread` (rad, in (0, pi)) about the leg's, at
+    `secondary_radius` and `secondary_height` (the primary hardpoint's if None); both secondaries get the same
     cells."""
     if not footpad_radius > 0:
         raise ValueError(f"footpad_radius: expected > 0 m, got {footpad_radius!r}")
@@ -410,12 +415,15 @@ def tripod_from_params(footpad_radius: float, hardpoint_radius: float, hardpoint
     if not 0 < secondary_spread < np.pi:
         raise ValueError(f"secondary_spread: expected in (0, pi) rad, got {secondary_spread!r}")
     zs = hardpoint_height if secondary_height is None else secondary_height
+    rs = hardpoint_radius if secondary_radius is None else secondary_radius
+    if not rs > 0:
+        raise ValueError(f"secondary_radius: expected > 0 m, got {rs!r}")
 
     def on_circle(radius, angle, height):
         return np.array([radius * np.cos(angle), radius * np.sin(angle), height])
 
     return TripodLeg(on_circle(hardpoint_radius, azimuth, hardpoint_height),
-                     np.array([on_circle(hardpoint_radius, azimuth + sign * secondary_spread, zs) for sign in (1, -1)]),
+                     np.array([on_circle(rs, azimuth + sign * secondary_spread, zs) for sign in (1, -1)]),
                      on_circle(footpad_radius, azimuth, footpad_height), secondary_attach, primary,
                      (secondary_compression, secondary_compression), (secondary_tension, secondary_tension),
                      footpad_diameter, footpad_mass)
