@@ -399,15 +399,21 @@ class TripodLegs(Legs):
     secondary_compression: str
     secondary_tension: str
 
+    @model_validator(mode="before")
+    @classmethod
+    def _count(cls, data: Any) -> Any:
+        """Without a count, the legs are as many as their azimuths."""
+        if isinstance(data, dict) and isinstance(data.get("azimuths"), list) and "count" not in data:
+            return {**data, "count": len(data["azimuths"])}
+        return data
+
     @model_validator(mode="after")
     def _shape(self):
-        if self.azimuths is not None:
-            if "count" in self.model_fields_set and self.count != len(self.azimuths):
-                raise refuse(f"count or azimuths, not both ({len(self.azimuths)} azimuths)", f"count = {self.count}",
-                             "count")
-            if len(self.azimuths) > TRIPOD_COUNT[1]:
-                raise refuse(f"{TRIPOD_COUNT[0]} to {TRIPOD_COUNT[1]} angles", f"{len(self.azimuths)}", "azimuths")
-            self.count = len(self.azimuths)
+        if self.azimuths is not None and self.count != len(self.azimuths):
+            raise refuse(f"as many legs as azimuths ({len(self.azimuths)}; give one of count and azimuths)",
+                         f"count = {self.count}", "count")
+        if self.azimuths is not None and len(self.azimuths) > TRIPOD_COUNT[1]:
+            raise refuse(f"{TRIPOD_COUNT[0]} to {TRIPOD_COUNT[1]} angles", f"{len(self.azimuths)}", "azimuths")
         if not 0 < self.secondary_half_angle < np.pi:
             raise refuse("an angle between 0 and 180 deg", f"{np.degrees(self.secondary_half_angle):.4g} deg",
                          "secondary_half_angle")

@@ -116,7 +116,7 @@ def test_symmetric_drop_strokes_each_primary_as_energy_balance_predicts(n):
     res = simulate(_scene(gear), Controls(t_final=0.6, rtol=1e-10, atol=1e-12, energy_check_from=None))
     assert res.status in ("end", "stable")
     strokes = res.memory[:, 0, 0]
-    assert expected[0] > 0.05                        # the primary crushes: a plateau stroke, not the elastic ramp
+    assert expected[0] > 0.02                        # the primary crushes on its plateau (past 0.01 m)
     np.testing.assert_allclose(strokes, expected[0], rtol=1e-6)
     assert res.energy["closure_rel"] < 1e-6
     # the secondaries' largest strokes (tension or compression) as the balance's, in every leg
@@ -136,21 +136,25 @@ def _oblique(**ctl):
 
 
 def _maxima(res):
-    return np.array([np.abs(res.accel_g).max(), res.memory[:, 0, 0].max(), np.abs(res.struts[:, :, 1:]).max()
-                     if np.isfinite(res.struts).any() else 0.0])
+    """Peak acceleration (at accepted steps), the largest primary stroke and the largest secondary stroke (both
+    located as events: a cell's turn)."""
+    return np.array([np.abs(res.accel_g).max(), res.memory[:, 0, 0].max(), res.memory[:, 1:, 0].max()])
 
 
 def test_maxima_converge_with_tolerance_and_agree_with_fixed_steps():
-    """Peak acceleration, largest primary stroke and largest secondary force of an oblique landing: over rtol
-    1e-5 ... 1e-8 each is within 1e-4 of a fixed-step run (5 us steps, events located as in every run); the
-    audit closes below 1e-6 on every run."""
+    """Peak acceleration, largest primary and secondary strokes of an oblique landing over rtol 1e-7, 1e-8, 1e-9:
+    each within 1e-4 of a fixed-step run (5 us steps, 35,000 of them, events located as in every run), the
+    finest rung nearer than the coarsest (they converge); the audit closes below 1e-6 on every run."""
     reference = _oblique(fixed_step=5e-6)
     assert reference.energy["closure_rel"] < 1e-6
     ref = _maxima(reference)
-    for rtol in (1e-5, 1e-6, 1e-7, 1e-8):
+    errors = []
+    for rtol in (1e-7, 1e-8, 1e-9):
         res = _oblique(rtol=rtol, atol=1e-3 * rtol)
         assert res.energy["closure_rel"] < 1e-6
         np.testing.assert_allclose(_maxima(res), ref, rtol=1e-4)
+        errors.append(np.abs(_maxima(res) / ref - 1.0))
+    assert np.all(errors[-1] <= errors[0])
 
 
 def test_the_compiled_variant_names_only_the_kinds_a_scene_uses():
