@@ -80,8 +80,9 @@ def initial_shape(legs) -> np.ndarray:
 # not inlined passes the ~30 arrays of the packed scene, which cost as much as a telescoping leg's arithmetic.
 # Small helpers are left to LLVM's inliner; IR-inlining them inside these bodies multiplied the compile time.
 def _present(geo) -> tuple[bool, bool, bool]:
-    """Which leg kinds a packed geo's numba type holds (telescoping, articulated, tripod)."""
-    return tuple(not isinstance(geo[k], types.NoneType) for k in (4, 8, 10))
+    """Which leg kinds a packed geo's numba type holds (telescoping, articulated, tripod; pack's geo before
+    with_terrain holds no tripod at 10)."""
+    return tuple(len(geo) > k and not isinstance(geo[k], types.NoneType) for k in (4, 8, 10))
 
 
 def _pick(geo, mixed, name: str):

@@ -19,7 +19,7 @@ from pydantic import PlainValidator, ValidationInfo, field_validator, model_vali
 from pydantic_core import PydanticCustomError
 
 from alightsize_sim.crush_cell import CellModel
-from alightsize_sim.landing import G0, Controls, Scene
+from alightsize_sim.landing import G0, HELD_FRICTION, Controls, Scene
 from alightsize_sim.landing_kernel import GRAZE_SPEED
 from alightsize_sim.rigid_body import matrix_quat
 from alightsize_sim.articulated_leg import ArticulatedLeg
@@ -462,6 +462,11 @@ class SceneFile(Table):
             if name not in self.cells:
                 raise refuse("the name of a [cells.NAME] table (" + ", ".join(sorted(self.cells)) + ")",
                              repr(name), "legs." + key)
+        slips = min(self.terrain.mu_static, self.terrain.mu_dynamic) < HELD_FRICTION or self.terrain.soil is not None
+        if isinstance(legs, TripodLegs) and slips and not legs.footpad_mass > 0:
+            raise refuse("footpads with mass for tripod legs on ground they can slip on (their massless slide does "
+                         "not converge with the tolerance: docs/simulator.md#tripod-legs)", "0 (massless footpads)",
+                         "legs.footpad_mass")
         if self.terrain.soil is not None:
             if not legs.footpad_mass > 0:
                 raise refuse("footpads with mass to sink into it ([legs] footpad_mass > 0)", "massless footpads",

@@ -63,3 +63,12 @@ def test_design_refuses_a_tripod_lander_naming_the_leg_kind():
     with pytest.raises(InputError) as err:
         read_lander(TRIPOD)
     assert err.value.key == "legs.kind" and err.value.found == "tripod"
+
+
+def test_massless_tripod_footpads_are_refused_where_they_can_slip():
+    """Held footpads (the default friction, 1.5e6) may be massless; on ground with friction below 1,000 a tripod's
+    footpads need a mass (docs/simulator.md: their massless slide does not converge)."""
+    assert read_scene(TRIPOD, {"legs.footpad_mass": "0 kg"}).scene.footpad_mass == 0.0
+    with pytest.raises(InputError) as err:
+        read_scene(TRIPOD, {"legs.footpad_mass": "0 kg", "terrain.mu_static": 0.4, "terrain.mu_dynamic": 0.4})
+    assert err.value.key == "legs.footpad_mass"
