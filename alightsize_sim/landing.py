@@ -60,6 +60,9 @@ class Scene:
         if self.soil is not None and not (self.footpad_mass > 0.0 and self.footpad_diameter > 0.0):
             raise ValueError("a scene on soil needs footpads with mass and a diameter (footpad_mass, "
                              "footpad_diameter > 0)")
+        if any(isinstance(leg, TripodLeg) for leg in self.legs) and not self.footpad_mass > 0.0 and not holds(self):
+            raise ValueError("tripod legs on ground they can slip on need footpads with mass (footpad_mass > 0): "
+                             "their massless slide does not converge (docs/simulator.md)")
 
 
 @dataclass(frozen=True)

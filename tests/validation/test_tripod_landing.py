@@ -3,11 +3,14 @@ functions, themselves checked against an independent space truss in test_tripod_
 primary stroke against energy balance with N = 3, 4 and 6 legs, the energy audit, convergence of maxima over a
 tolerance ladder against a fixed-step reference, and the compiled variant naming only the kinds a scene uses."""
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 from numba import typeof
 from scipy.optimize import brentq
 
+from alightsize.model.scene_config import read_scene
 from alightsize_sim import legs as legs_mod
 from alightsize_sim import tripod_leg
 from alightsize_sim.crush_cell import CellModel
@@ -19,6 +22,7 @@ from alightsize_sim.terrain import Terrain
 from alightsize_sim.terrain import pack as pack_terrain
 from alightsize_sim.tripod_leg import (TripodLeg, cell_deflections, footpad_force, strut_lengths,
                                        tripod_from_params)
+from conftest import ROOT
 
 MASS, G_MOON = 1500.0, 1.62
 K_SEC = 2.0e6                                        # N/m: the secondaries' elastic line
@@ -166,3 +170,14 @@ def test_the_compiled_variant_names_only_the_kinds_a_scene_uses():
     geo = with_terrain(geo, pack_terrain(Terrain()))
     assert geo[4] is None and geo[8] is None and geo[10].shape == (4, 5, 3)
     assert legs_mod._pick(typeof(geo), None, "leg_force") is tripod_leg.leg_force.py_func
+
+
+def test_a_sliding_landing_on_footpads_with_mass_closes_its_energy_audit():
+    """The example lander down a 12 deg slope at mu 0.4, 1 m/s across: its 5 kg footpads slide (friction's work
+    is part of the audit), and the audit closes below 1e-6 at rtol 1e-8."""
+    cfg = read_scene(ROOT / "examples" / "lunar_tripod.toml",
+                     {"terrain.slope": "12 deg", "terrain.mu_static": 0.4, "terrain.mu_dynamic": 0.4,
+                      "initial.velocity": ["1 m/s", "0 m/s", "-3 m/s"]})
+    res = simulate(cfg.scene, replace(cfg.controls, rtol=1e-8, atol=1e-11, t_final=1.0, energy_check_from=None))
+    assert res.energy["friction_J"] > 100.0                   # the footpads slid
+    assert res.energy["closure_rel"] < 1e-6
