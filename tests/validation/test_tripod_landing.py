@@ -18,6 +18,7 @@ from alightsize_sim.crush_curve import CrushCurve
 from alightsize_sim.landing import Controls, Scene, simulate, variant
 from alightsize_sim.legs import leg_force, pack, with_terrain
 from alightsize_sim.rigid_body import quat_matrix
+from alightsize_sim.telescoping_leg import TelescopingLeg
 from alightsize_sim.terrain import Terrain
 from alightsize_sim.terrain import pack as pack_terrain
 from alightsize_sim.tripod_leg import (TripodLeg, cell_deflections, footpad_force, strut_lengths,
@@ -181,3 +182,20 @@ def test_a_sliding_landing_on_footpads_with_mass_closes_its_energy_audit():
     res = simulate(cfg.scene, replace(cfg.controls, rtol=1e-8, atol=1e-11, t_final=1.0, energy_check_from=None))
     assert res.energy["friction_J"] > 100.0                   # the footpads slid
     assert res.energy["closure_rel"] < 1e-6
+
+
+def test_a_scene_mixing_tripod_and_telescoping_legs_lands_and_closes_its_audit():
+    """Two tripods and two telescoping legs (the per-leg dispatch, each kind's functions compiled): the landing
+    ends, the audit closes below 1e-6, strut forces are recorded for the tripods only."""
+    gear = _gear(4)
+    axial = _primary()
+    tel = [TelescopingLeg(np.array([2.4 * np.cos(a), 2.4 * np.sin(a), 0.4]), np.eye(3), 1.6, 0.0, (), axial, ())
+           for a in (0.5 * np.pi, 1.5 * np.pi)]
+    scene = Scene(MASS, np.array([900.0, 900.0, 750.0]), (gear[0], tel[0], gear[2], tel[1]),
+                  np.array([0.0, 0.0, -G_MOON]), np.array([0.5, 0.0, -3.0]), np.array([1.0, 0.0, 0.0, 0.0]),
+                  np.zeros(3))
+    assert variant(scene) == "telescoping and tripod legs, footpads that hold"
+    res = simulate(scene, Controls(t_final=0.6, energy_check_from=None))
+    assert res.status == "end" and res.energy["closure_rel"] < 1e-6
+    assert np.all(res.memory[:, 0, 0] > 0.01)                  # every leg's main cell crushed
+    assert np.isnan(res.struts[:, [1, 3]]).all() and np.isfinite(res.struts[res.contact[:, 0] > 0, 0]).all()
