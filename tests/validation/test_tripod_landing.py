@@ -199,3 +199,16 @@ def test_a_scene_mixing_tripod_and_telescoping_legs_lands_and_closes_its_audit()
     assert res.status == "end" and res.energy["closure_rel"] < 1e-6
     assert np.all(res.memory[:, 0, 0] > 0.01)                  # every leg's main cell crushed
     assert np.isnan(res.struts[:, [1, 3]]).all() and np.isfinite(res.struts[res.contact[:, 0] > 0, 0]).all()
+
+
+def test_a_leg_whose_struts_meet_in_their_hardpoints_plane_counts_as_folded_flat():
+    """With the footpad in the plane of the three hardpoints the unit strut vectors are coplanar (u . (e1 x e2)
+    = 0): legs.folded names the leg; at rest (|u . (e1 x e2)| >= MIN_DET by validation) it names none."""
+    leg = _gear(4)[0]
+    geo, _ = pack((leg,))
+    geo = with_terrain(geo, pack_terrain(Terrain()))
+    h = leg.hardpoints
+    flat = h.mean(axis=0) + 0.5 * (h[0] - h[1])                 # in the hardpoints' plane
+    contact = np.ones(1, np.int64)
+    assert legs_mod.folded(geo, contact, flat[None, :], np.zeros(3), np.eye(3)) == 0
+    assert legs_mod.folded(geo, contact, leg.footpad[None, :], np.zeros(3), np.eye(3)) == -1
