@@ -40,7 +40,7 @@ from alightsize_sim.articulated_cells import return_spring_force
 from alightsize_sim.articulated_leg import ArticulatedLeg
 from alightsize_sim.articulated_statics import MEMBERS, Reactions, TrussAngles, ground_force, member_loads, reactions
 from alightsize_sim.landing import Result, Scene
-from alightsize_sim.legs import initial_shape, leg_force, lift_shape, pack
+from alightsize_sim.legs import initial_shape, leg_force, lift_shape, pack, with_terrain
 from alightsize_sim.rigid_body import quat_matrix
 from alightsize_sim.terrain import pack as pack_terrain
 from alightsize_sim.telescoping_leg import TelescopingLeg as SimTelescopingLeg
@@ -58,7 +58,7 @@ def leg_shapes(scene: Scene, res: Result) -> np.ndarray:
     (alpha, beta, psi), telescoping (alpha, beta, 0), rad. ValueError if the recovered shape does not reproduce
     the recorded deflections (to SHAPE_TOL)."""
     geo, cells = pack(scene.legs)
-    geo = (*geo, pack_terrain(scene.terrain))          # as the landing's: a free leg's shape looks at the terrain
+    geo = with_terrain(geo, pack_terrain(scene.terrain))   # as the landing's: a free leg's shape looks at the terrain
     n_cell = cells[2].shape[1]
     mem = np.zeros((n_cell, 2))
     defl, frc, rte, X = np.zeros(n_cell), np.zeros(n_cell), np.zeros(n_cell), np.zeros(3)

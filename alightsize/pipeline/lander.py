@@ -46,7 +46,7 @@ from alightsize.model.envelope import Envelope
 from alightsize.model.materials import library, material_paths
 from alightsize.model.gravity import Gravity
 from alightsize.model.legs import TrussTable
-from alightsize.model.scene_config import (Cell, SceneConfig, SceneDocument, SceneFile, TelescopingLegs,
+from alightsize.model.scene_config import (Cell, SceneConfig, SceneDocument, SceneFile, TelescopingLegs, TripodLegs,
                                            build_scene, lander_scene, read_scene)
 from alightsize.model.soils import find_soil
 from alightsize.pipeline.cores import core_prism, crush_stroke
@@ -305,6 +305,10 @@ def _loads_config(path: Path, name: str, structure: dict, scene: SceneFile, legs
                   units: str) -> tuple[LoadsConfig, tuple[str, ...]]:
     """The App. III loads config of the lander's own legs and cells (and the envelopes its members use)."""
     file = str(path)
+    if isinstance(scene.legs, TripodLegs):
+        raise InputError(file, "legs.kind", "telescoping or articulated legs to design (the members of tripod legs "
+                         "are not derived yet: `alightsize simulate` and `sweep` run a tripod lander's landings)",
+                         "tripod")
     if isinstance(scene.legs, TelescopingLegs):
         s = validate(TelescopingStructure, structure, file, "structure")
         leg = legs[0]
