@@ -246,3 +246,27 @@ def tripod_member_histories(res: Result, legs: Sequence[TripodLeg]) -> TripodHis
                 forces[m][step, i] = v
             moment[step, i], hard[step, i] = s.knee_moment, s.hardpoint_forces
     return TripodHistory(forces, moment, hard)
+
+
+TRIPOD_MAGNITUDES = (("knee_moment", "N*m"), ("primary_pin", "N"), ("footpad", "N"))
+
+
+def tripod_envelope(hist: TripodHistory, res: Result) -> list[dict]:
+    """A tripod landing's load extremes: per strut force (TRIPOD_FORCES) its largest tension and compression
+    (`dynamic_envelope`'s format, `at` = {t_s, leg (1..)}), then {member, largest, unit, at} for the knee moment,
+    the resultant on the primary's hardpoint pin and the ground force on the footpad (the force the leg carries,
+    `leg_force`); None where never loaded. Ties go to the earliest step, then leg."""
+    def where(k: int, i: int) -> dict:
+        return {"t_s": float(res.t[k]), "leg": i + 1}
+    rows = _extremes(hist.forces, where)
+    ground = np.where(res.contact[..., None], res.leg_force, np.nan)
+    fields = {"knee_moment": hist.knee_moment, "primary_pin": np.linalg.norm(hist.hardpoints[:, :, 0], axis=-1),
+              "footpad": np.linalg.norm(ground, axis=-1)}
+    for m, unit in TRIPOD_MAGNITUDES:
+        f = fields[m]
+        if np.isfinite(f).any():
+            k, i = np.unravel_index(int(np.nanargmax(f)), f.shape)
+            rows.append({"member": m, "largest": float(f[k, i]), "unit": unit, "at": where(int(k), int(i))})
+        else:
+            rows.append({"member": m, "largest": None, "unit": unit, "at": None})
+    return rows

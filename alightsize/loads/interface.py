@@ -35,7 +35,7 @@ from alightsize_sim.telescoping_leg import TelescopingLeg as SimTelescopingLeg
 from alightsize_sim.tripod_leg import TripodLeg
 
 from alightsize.loads.histories import (LegHistory, articulated_envelope, leg_histories, telescoping_dynamic_envelope,
-                                        tripod_member_histories)
+                                        tripod_envelope, tripod_member_histories)
 from alightsize.loads.telescoping import TelescopingLeg as TelescopingFreeBody
 from alightsize.model.scene_config import SceneConfig
 
@@ -145,9 +145,23 @@ def telescoping_landing_loads(cfg: SceneConfig, res: Result, leg: TelescopingFre
             "interface_loads": interface_extremes(telescoping_hardpoints(cfg, res), res.t, cfg.to_geometric)}
 
 
-def landing_loads(truss: TrussAngles | None = None,
-                  telescoping: TelescopingFreeBody | None = None) -> Callable[[SceneConfig, Result], dict]:
-    """The sweep's per-landing loads function of a telescoping leg's free body or an articulated leg's truss."""
+def tripod_landing_loads(cfg: SceneConfig, res: Result) -> dict[str, list[dict]]:
+    """A landing's stored loads: `member_loads` (`tripod_envelope`) and `interface_loads` of its tripod legs."""
+    legs = [lg for lg in cfg.scene.legs if isinstance(lg, TripodLeg)]
+    if len(legs) != len(cfg.scene.legs):
+        raise ValueError("tripod member loads need tripod legs")
+    hist = tripod_member_histories(res, legs)
+    return {"member_loads": tripod_envelope(hist, res),
+            "interface_loads": interface_extremes(HardpointHistory(TRIPOD_HARDPOINTS, hist.hardpoints), res.t,
+                                                  cfg.to_geometric)}
+
+
+def landing_loads(truss: TrussAngles | None = None, telescoping: TelescopingFreeBody | None = None,
+                  tripod: bool = False) -> Callable[[SceneConfig, Result], dict]:
+    """The sweep's per-landing loads function of a telescoping leg's free body, an articulated leg's truss or, with
+    `tripod`, tripod legs (their geometry is the scene's)."""
+    if tripod:
+        return tripod_landing_loads
     if telescoping is not None:
         return partial(telescoping_landing_loads, leg=telescoping)
     assert truss is not None                          # an articulated leg's loads config has its truss

@@ -6,7 +6,7 @@ from __future__ import annotations
 import copy
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Annotated, Literal
+from typing import Annotated, Callable, Literal
 
 from alightsize.common.config import Node, is_file, load_toml
 from alightsize.common.errors import InputError
@@ -40,6 +40,9 @@ class DesignSpec:
     landings: LandingSpec | None = None
     weight_goal: float | None = None          # leg-system weight as a fraction of the capsule
     rules: str = DEFAULT_RULES                # the checks' formulas where a check names none (checks.rules)
+    # items whose loads the landings give (a tripod leg's members): stored landing rows -> the item tables that
+    # replace `items` (which hold them under stand-in loads, to be validated when read)
+    landing_items: Callable[[tuple[dict, ...]], tuple[Node, ...]] | None = None
 
 
 @dataclass(frozen=True)
@@ -138,16 +141,18 @@ def prepare(spec: DesignSpec, landings_dir: Path | None = None, progress: bool =
     resolve every check's load."""
     loads = run_loads(spec.loads) if spec.loads is not None else None
     landings = None
+    nodes = spec.items
     if spec.landings is not None:
-        assert loads is not None                    # landing cases come with their loads (landing_spec, read_lander)
         loads, landings = (landed(spec.landings, loads, rows) if rows is not None
                            else run_landings(spec.landings, loads, landings_dir, progress))
+        if spec.landing_items is not None:
+            nodes = spec.landing_items(landings.rows)
     root = Node(spec.path, "", {})
     if loads is not None:
         attach(root, loads)
     else:
         validate_references(root, None)
-    items = read_items(spec.items, spec.materials, spec.required, root, spec.rules)
+    items = read_items(nodes, spec.materials, spec.required, root, spec.rules)
     return DesignConfig(spec.path, spec.configuration, spec.title, spec.capsule_mass, spec.legs, spec.units,
                         spec.required, spec.decimals, items, loads, tuple(root.context.get("load_references", ())),
                         landings, spec.weight_goal)

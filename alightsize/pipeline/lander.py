@@ -5,8 +5,9 @@ members' checks, the landing cases of the requirements). Reading it only reads a
 [lander]        name, title, gravity ("earth" | "moon" | "mars" | an acceleration), rules, materials
 [capsule] [cells.NAME] [legs] [terrain] [controls] [initial]     as in a scene (docs/reference/scene.md)
 [structure]     telescoping: bearing_length, friction, body_radius (outrigger); articulated: truss, psi_final, grid,
-                configuration, combined
-[members.NAME]  material, section, role, size, weight, ... (alightsize.pipeline.members, .outrigger)
+                configuration, combined; tripod: none
+[members.NAME]  material, section, role, size, weight, ... (alightsize.pipeline.members, .outrigger; tripod legs:
+                .tripod_members, loaded by the landings' strut-load extremes)
 [[item]]        App. IV items with their checks written out (overrides; the 1966 examples)
 [requirements]  required_design_factor (allow_below_one), decimals, weight_goal, criteria, envelope, monte_carlo
 [report]        units = "US" | "SI"
@@ -15,8 +16,10 @@ members' checks, the landing cases of the requirements). Reading it only reads a
 
 from __future__ import annotations
 
+import copy
 import itertools
 from dataclasses import dataclass
+from functools import partial
 from math import degrees, radians
 from pathlib import Path
 from typing import Annotated, Any
@@ -29,6 +32,7 @@ from alightsize_sim.articulated_leg import ArticulatedLeg
 from alightsize_sim.landing import G0
 from alightsize_sim.rigid_body import quat_matrix
 from alightsize_sim.telescoping_leg import TelescopingLeg as SimTelescopingLeg
+from alightsize_sim.tripod_leg import TripodLeg
 from alightsize_sim.crush_curve import CrushCurve
 
 from alightsize.common.config import SEED_MAX, Node, load_toml
@@ -56,6 +60,7 @@ from alightsize.checks.rules import DEFAULT_RULES, RuleSet
 from alightsize.pipeline.items import RequiredFactor
 from alightsize.pipeline.members import member_item
 from alightsize.pipeline.outrigger import OUTRIGGER, outrigger_item, outrigger_span
+from alightsize.pipeline.tripod_members import TripodLoads, landing_tripod_items, tripod_items
 
 SCENE_TABLES = ("capsule", "cells", "legs", "terrain", "initial", "controls", "output")
 ALL_CONFIGURATIONS = "all"           # the combined envelope of App. III cell variants when none is named
@@ -206,9 +211,11 @@ def landing_cases(scene: SceneDocument, name: str, req: Requirements, legs: int,
                  "initial.velocity[2]", False, mc.seed, plot)
 
 
-def rest_footpad(leg: SimTelescopingLeg | ArticulatedLeg) -> np.ndarray:
-    """A leg's footpad at rest (hanging straight; the parallelogram at its initial psi, the peg leg straight down),
-    m in principal axes from the centre of gravity."""
+def rest_footpad(leg: SimTelescopingLeg | ArticulatedLeg | TripodLeg) -> np.ndarray:
+    """A leg's footpad at rest (hanging straight; the parallelogram at its initial psi, the peg leg straight down;
+    a tripod's as its geometry places it), m in principal axes from the centre of gravity."""
+    if isinstance(leg, TripodLeg):
+        return leg.footpad
     if isinstance(leg, ArticulatedLeg):
         s = np.array(articulated_footpad(leg.geometry, 0.0, 0.0, leg.psi0), float)
     elif isinstance(leg, SimTelescopingLeg):
@@ -302,13 +309,16 @@ class ArticulatedStructure(Table):
 
 
 def _loads_config(path: Path, name: str, structure: dict, scene: SceneFile, legs: tuple,
-                  units: str) -> tuple[LoadsConfig, tuple[str, ...]]:
-    """The App. III loads config of the lander's own legs and cells (and the envelopes its members use)."""
+                  units: str) -> tuple[LoadsConfig | None, tuple[str, ...]]:
+    """The App. III loads config of the lander's own legs and cells (and the envelopes its members use); none for
+    tripod legs, whose members take their loads from the landings alone."""
     file = str(path)
     if isinstance(scene.legs, TripodLegs):
-        raise InputError(file, "legs.kind", "telescoping or articulated legs to design (the members of tripod legs "
-                         "are not derived yet: `alightsize simulate` and `sweep` run a tripod lander's landings)",
-                         "tripod")
+        if structure:
+            raise InputError(file, f"structure.{next(iter(structure))}", "no [structure] for tripod legs (their "
+                             "geometry gives every length; the members' loads come from the landings)",
+                             repr(structure[next(iter(structure))]))
+        return None, ()
     if isinstance(scene.legs, TelescopingLegs):
         s = validate(TelescopingStructure, structure, file, "structure")
         leg = legs[0]
@@ -397,15 +407,22 @@ def read_lander(path: str | Path, overrides: dict | None = None, root: Node | No
     if span is not None and OUTRIGGER not in (members.data if members else {}):
         raise root.error(f"members.{OUTRIGGER}", f"the outrigger from the body ([structure] body_radius) to the "
                          f"legs' attachment, {span:.4g} m out: a member to check and weigh", "none")
-    nodes = []
-    if members:
+    nodes: list[Node] = []
+    tripod: tuple[TripodLeg, Node] | None = None
+    leg = scene.scene.legs[0]
+    if isinstance(leg, TripodLeg) and members:     # a tripod lander's legs are alike but for their azimuth
+        tripod = (leg, Node(members.file, members.path, copy.deepcopy(members.data), members.context))
+        nodes += tripod_items(leg, TripodLoads.stand_in(), members, rules, mats)
+    elif members:
+        assert loads is not None                    # telescoping and articulated legs have their App. III config
         for key in members.data:
             m = members.table(key)
             data = (outrigger_item(m, loads.telescoping, span, rules) if key == OUTRIGGER
                     else member_item(m, key, loads.telescoping, envelopes[-1], rules))
             nodes.append(Node(root.file, m.path, data, root.context))
         members.finish()
-    nodes += [_crushable(n, root, scene_file, mats) for n in root.tables("item", optional=True, label="name")]
+    others = [_crushable(n, root, scene_file, mats) for n in root.tables("item", optional=True, label="name")]
+    nodes += others
     if not nodes:
         raise root.error("members", "at least one [members.NAME] table or [[item]]", "neither")
     validate_references(root, loads)
@@ -417,11 +434,15 @@ def read_lander(path: str | Path, overrides: dict | None = None, root: Node | No
             raise InputError(str(path), "requirements.terrain.soil", "footpads that sink into it ([legs] "
                              "footpad_mass and footpad_diameter)", "massless footpads or no footpad_diameter")
     study = landing_cases(document, name, req, len(scene.scene.legs), scene_over)
-    member_loads = landing_loads(truss=None if loads.telescoping else loads.cases[0].truss,
-                                 telescoping=loads.telescoping)
+    if loads is None:
+        member_loads = landing_loads(tripod=True)
+    else:
+        member_loads = landing_loads(truss=None if loads.telescoping else loads.cases[0].truss,
+                                     telescoping=loads.telescoping)
     landings = LandingSpec(study, envelopes, "criteria", member_loads)
+    derived = partial(landing_tripod_items, *tripod, rules, mats, tuple(others)) if tripod else None
     spec = DesignSpec(path, name, title, scene.scene.mass, len(scene.scene.legs), units, req.required, req.decimals,
-                      mats, tuple(nodes), loads, landings, req.weight_goal, rules)
+                      mats, tuple(nodes), loads, landings, req.weight_goal, rules, derived)
     return Lander(spec, scene, req, document)
 
 

@@ -50,7 +50,8 @@ class Landings:
     study: Study
     envelopes: tuple[str, ...]
     rows: tuple[dict, ...]            # the stored runs, study order
-    quasi_static: LoadsResult         # the envelopes before the landings joined them
+    quasi_static: LoadsResult | None  # the envelopes before the landings joined them (None: the landings alone
+                                      # load the members, as a tripod leg's)
     role: str = "criteria"            # "criteria": the design passes only if every landing meets them
 
     @cached_property
@@ -110,6 +111,7 @@ class Landings:
 
     def quasi_static_load(self, envelope: str, member: str, sense: str) -> float | None:
         """The load magnitude an envelope reference had before the landings joined (None: not loaded so)."""
+        assert self.quasi_static is not None        # a reference's envelope was computed before the landings
         if envelope == TELESCOPING:
             tele = self.quasi_static.telescoping
             assert tele is not None                 # the "telescoping" envelope is a telescoping leg's free body
@@ -237,8 +239,8 @@ def landing_spec(t: LandingsTable, design: Path, loads: LoadsConfig | None) -> L
     return LandingSpec(study, tuple(t.envelopes), t.role, landing_loads(truss=loads.cases[0].truss))
 
 
-def run_landings(spec: LandingSpec, loads: LoadsResult, out: Path | None,
-                 progress: bool = False) -> tuple[LoadsResult, Landings]:
+def run_landings(spec: LandingSpec, loads: LoadsResult | None, out: Path | None,
+                 progress: bool = False) -> tuple[LoadsResult | None, Landings]:
     """Run the landing cases into `out` (resumable; a temporary folder when None) and merge their member loads
     into the envelopes."""
     study = spec.study
@@ -251,10 +253,13 @@ def run_landings(spec: LandingSpec, loads: LoadsResult, out: Path | None,
     return landed(spec, loads, rows)
 
 
-def landed(spec: LandingSpec, loads: LoadsResult, rows: tuple[dict, ...]) -> tuple[LoadsResult, Landings]:
-    """The landings of stored rows (one per run of the study, in its order) merged into the envelopes."""
+def landed(spec: LandingSpec, loads: LoadsResult | None,
+           rows: tuple[dict, ...]) -> tuple[LoadsResult | None, Landings]:
+    """The landings of stored rows (one per run of the study, in its order) merged into the envelopes (none without
+    quasi-static envelopes: a tripod lander's members take their loads from the rows themselves)."""
     failed = [r for r in rows if r["status"] != "done"]
     if failed:
         raise InputError(str(spec.study.path), "landings", "landing cases that all run",
                          f"runs {', '.join(r['run_id'] for r in failed)} failed: {failed[0]['message']}")
-    return merge(loads, rows, spec.envelopes), Landings(spec.study, spec.envelopes, rows, loads, spec.role)
+    merged = merge(loads, rows, spec.envelopes) if loads is not None else None
+    return merged, Landings(spec.study, spec.envelopes, rows, loads, spec.role)

@@ -25,6 +25,8 @@ length or a count: the geometry gives them):
 
 from __future__ import annotations
 
+import copy
+import json
 from dataclasses import dataclass
 from math import cos, isfinite, pi, sin
 
@@ -61,6 +63,31 @@ class TripodLoads:
     knee_moment: float
     primary_pin: float
     footpad: float
+
+    @classmethod
+    def stand_in(cls) -> "TripodLoads":
+        """1 N (and 1 N m) everywhere: every check present, to validate member tables before any landing."""
+        return cls(1.0, (1.0, 1.0), (1.0, 1.0), 1.0, 1.0, 1.0, 1.0, 1.0)
+
+    @classmethod
+    def from_landings(cls, rows) -> "TripodLoads":
+        """The extremes over every landing of the stored rows' `member_loads_json`
+        (alightsize.loads.histories.tripod_envelope): each strut's largest compression and tension, the largest
+        knee moment, primary pin force and footpad force; 0 where never loaded so."""
+        tension: dict[str, float] = {}
+        compression: dict[str, float] = {}
+        largest: dict[str, float] = {}
+        for r in rows:
+            for d in json.loads(r.get("member_loads_json") or "[]"):
+                m = d["member"]
+                if "largest" in d:
+                    largest[m] = max(largest.get(m, 0.0), d["largest"] or 0.0)
+                else:
+                    tension[m] = max(tension.get(m, 0.0), d["tension_N"] or 0.0)
+                    compression[m] = max(compression.get(m, 0.0), -(d["compression_N"] or 0.0))
+        c, t, g = (lambda m: compression.get(m, 0.0)), (lambda m: tension.get(m, 0.0)), (lambda m: largest.get(m, 0.0))
+        return cls(c("primary"), (c("secondary1"), c("secondary2")), (t("secondary1"), t("secondary2")),
+                   c("primary_upper"), t("primary_upper"), g("knee_moment"), g("primary_pin"), g("footpad"))
 
     def __post_init__(self):
         values = (self.primary, *self.secondary_compression, *self.secondary_tension, self.primary_upper_compression,
@@ -207,6 +234,14 @@ def tripod_member_items(node: Node, name: str, leg: TripodLeg, loads: TripodLoad
                  "check": _plate("plate_supported_center_load", _n(loads.footpad), node, rules)}]
     return [{"name": n, **base, "length": _m(length), "weight": base.get("weight", w), "check": checks}
             for n, length, w, checks in items]
+
+
+def landing_tripod_items(leg: TripodLeg, members: Node, rules: str, materials: dict[str, Material],
+                         others: tuple[Node, ...], rows: tuple[dict, ...]) -> tuple[Node, ...]:
+    """The items of a tripod lander: its `[members.NAME]` tables (`members`, as read: a copy is consumed) under the
+    load extremes of the stored landing `rows` (`TripodLoads.from_landings`), then the `others` ([[item]])."""
+    fresh = Node(members.file, members.path, copy.deepcopy(members.data), members.context)
+    return (*tripod_items(leg, TripodLoads.from_landings(rows), fresh, rules, materials), *others)
 
 
 def tripod_items(leg: TripodLeg, loads: TripodLoads, members: Node, rules: str,
