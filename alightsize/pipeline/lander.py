@@ -162,6 +162,12 @@ def _q(x: float, unit: str) -> str:
     return f"{x:.12g} {unit}"
 
 
+def _place(x: float) -> str:
+    """A computed position, m, as a quantity: below a micrometre (round-off of a footpad on an axis) it reads 0 m,
+    as the parser refuses a smaller magnitude; a micrometre is far below any rock or step."""
+    return _q(x if abs(x) >= 1e-6 else 0.0, "m")
+
+
 def landing_cases(scene: SceneDocument, name: str, req: Requirements, legs: int, base: dict | None = None) -> Study:
     """The envelope's corners (each range at both ends, a slope or inclination magnitude and the roll rate at
     either sign, a leg leading or two legs straddling the velocity) and `samples` seeded Monte Carlo landings drawn
@@ -243,13 +249,13 @@ def terrain_cases(scene: SceneDocument, terrain: TerrainRequirement, corners: li
         extra: list[tuple[str, str, object]] = []
         if terrain.rock_height is not None:
             x, y = feet[0]
-            rock = {"shape": "hemisphere", "x": _q(x, "m"), "y": _q(y, "m"), "radius": _q(terrain.rock_height, "m"),
+            rock = {"shape": "hemisphere", "x": _place(x), "y": _place(y), "radius": _q(terrain.rock_height, "m"),
                     "note": "under leg 1 ([requirements.terrain] rock_height)"}
             extra.append(("rock", "terrain.rocks", [*ter.get("rocks", []), rock]))
         if terrain.hole_depth is not None:
             e = feet[0] / np.linalg.norm(feet[0])
             edge = 0.5 * (feet[0] @ e + np.max(feet[1:] @ e)) * e                 # a file has 2 legs or more
-            step = {"x": _q(edge[0], "m"), "y": _q(edge[1], "m"),
+            step = {"x": _place(edge[0]), "y": _place(edge[1]),
                     "direction": _q(degrees(np.arctan2(-e[0], e[1])), "deg"),     # leg 1 on its left
                     "height": _q(-terrain.hole_depth, "m"),
                     "note": "leg 1 into a hole ([requirements.terrain] hole_depth)"}

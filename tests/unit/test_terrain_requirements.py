@@ -126,3 +126,24 @@ def test_synthesize_lands_the_terrain_cases_as_corners(tmp_path):
                            "AND run_id IS NOT NULL").fetchone()[0]
     assert "terrain_rocks_0" in cols and rocks > 0 and rocks % 2 == 0 and holes == rocks
     assert plain >= rocks                  # the open-ground corners of the same candidates, and Monte Carlo
+
+
+def test_tripod_terrain_cases_place_the_rock_and_hole_under_leg_1_even_on_an_axis(tmp_path):
+    # The tripod example's legs at 45 deg, rolled 45 deg in half its corners, put leg 1's footpad on a body axis:
+    # its other coordinate is round-off (~1e-16 m) and must read 0 m, not be refused. The terrain under leg 1 is
+    # the rock's top (its radius) or the hole's floor, the plane under the others, as above (1e-9 m).
+    text = (ROOT / "examples" / "lunar_tripod.toml").read_text()
+    p = tmp_path / "tripod.toml"
+    p.write_text(text.replace("[requirements.monte_carlo]", TABLE + "\n[requirements.monte_carlo]"))
+    runs = [r for r in alightsize.read_lander(p).study.runs if r.run_id.split("-")[1] in ("rock", "hole")]
+    assert len(runs) == 32
+    on_axis = 0
+    for r in runs:
+        cfg = read_scene(r.scene, r.overrides)
+        R = quat_matrix(cfg.scene.q0)
+        feet = [(R @ rest_footpad(leg))[:2] for leg in cfg.scene.legs]
+        on_axis += min(abs(feet[0])) < 1e-6
+        z = [height(pack(cfg.scene.terrain), x, y) for x, y in feet]
+        assert z[0] == pytest.approx(0.3 if "rock" in r.run_id else -0.2, abs=1e-9)
+        assert np.allclose(z[1:], 0.0, atol=1e-9)
+    assert on_axis > 0
