@@ -20,14 +20,15 @@ from alightsize.landings.run_store import RunStore
 from alightsize.landings.study import Study
 
 SCHEMA = "alightsize.sweep/1"
-# The printed legends: Table 2, Tables 3-4; axial, body contact and
+# The printed legends: Table 2, Tables 3-4; axial, the tripod's struts, body contact and
 # failed have no printed symbol.
 SYMBOL = {"stable": "X", "bottomed_alpha": "●", "bottomed_psi": "■", "bottomed_rotational_pad": "●",
-          "bottomed_axial": "▲", "walking": "+", "time_out": "+", "tipped": "◆", "body_contact": "▼",
-          "failed": "F", None: "F"}
+          "bottomed_axial": "▲", "bottomed_primary_strut": "▲", "bottomed_secondary_strut": "△", "walking": "+",
+          "time_out": "+", "tipped": "◆", "body_contact": "▼", "failed": "F", None: "F"}
 # What each symbol of the outcome matrix means, in the words of its legend.
 MEANING = {"stable": "stable", "bottomed_alpha": "bottomed α", "bottomed_psi": "bottomed ψ",
            "bottomed_rotational_pad": "bottomed rotational pad", "bottomed_axial": "bottomed axial",
+           "bottomed_primary_strut": "bottomed primary strut", "bottomed_secondary_strut": "bottomed secondary strut",
            "walking": "walking", "time_out": "time-out", "tipped": "tipped", "body_contact": "body contact",
            "failed": "failed"}
 

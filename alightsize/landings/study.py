@@ -40,7 +40,8 @@ from alightsize.landings.output import outcome
 from alightsize.model.scene_config import SceneConfig, SceneDocument, read_scene, scene_document
 from alightsize.common.units import registry
 
-BOTTOMED_KIND = {"axial": "axial", "rot": "rotational_pad", "upper": "psi", "lower": "alpha"}
+BOTTOMED_KIND = {"axial": "axial", "rot": "rotational_pad", "upper": "psi", "lower": "alpha",
+                 "primary": "primary_strut", "secondary": "secondary_strut"}     # cell names by prefix
 # The printed legends have one symbol for both: "+ FLIGHT TIME OUT, CAPSULE 'WALKING'" (Tables 3-4,
 # their legends; Sec. II.B: every run stopped by the time limit was called walking).
 PRINTED_AS = {"time_out": "walking"}

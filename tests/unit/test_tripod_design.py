@@ -138,3 +138,15 @@ def test_a_cantilever_designs_with_combined_checks_on_its_primary(tmp_path):
     assert upper["P"] == pytest.approx(max(s["primary_upper compression"], s["primary_upper tension"]), rel=PARSE)
     assert lower["P"] == pytest.approx(s["primary compression"], rel=PARSE)
     assert {r.item.name for r in res.records} >= {"primary_upper", "primary_lower"}
+
+
+def test_every_cell_a_leg_can_have_names_its_bottomed_class():
+    # A landing that bottoms is classed by its cell's name (`outcome_class`): every cell name a scene builds
+    # (telescoping, articulated, tripod) must map to a class with a symbol and a meaning in the sweep's tables.
+    from alightsize.landings.outcomes import MEANING, SYMBOL
+    from alightsize.landings.study import BOTTOMED_KIND
+    from alightsize.model.scene_config import TRIPOD_CELLS
+    for cell in (*TRIPOD_CELLS, "axial", "rot1", "upper", "lower"):
+        kinds = [v for k, v in BOTTOMED_KIND.items() if cell.startswith(k)]
+        assert len(kinds) == 1, cell
+        assert f"bottomed_{kinds[0]}" in SYMBOL and f"bottomed_{kinds[0]}" in MEANING
