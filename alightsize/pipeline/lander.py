@@ -189,7 +189,10 @@ def landing_cases(scene: SceneDocument, name: str, req: Requirements, legs: int,
             fixed[key] = _q(lo, unit)
     if e.friction is not None:
         fixed["terrain.mu_static"] = e.friction[1]
-        axes["terrain.mu_dynamic"] = sorted(set(e.friction))
+        if e.friction[0] < e.friction[1]:
+            axes["terrain.mu_dynamic"] = list(e.friction)
+        else:                                       # one friction: the Monte Carlo lands at it too
+            fixed["terrain.mu_dynamic"] = e.friction[0]
     combos = list(itertools.product(*axes.values()))
     width = len(str(len(combos)))
     points = [(f"corner-{n + 1:0{width}d}", "lander", {**fixed, **dict(zip(axes, c))}, dict(zip(axes, c)), None)
