@@ -59,10 +59,19 @@ def test_given_azimuths_place_the_legs():
     np.testing.assert_allclose(angles, [100.0, 120.0, 140.0], rtol=1e-12)
 
 
-def test_design_refuses_a_tripod_lander_naming_the_leg_kind():
+def test_a_tripod_lander_refuses_structure_and_the_other_variants_members(tmp_path):
+    """A tripod's geometry gives every length: a [structure] table is refused naming its key; an inverted tripod's
+    members are its own (primary_upper is a cantilever's), refused naming the member."""
+    text = TRIPOD.read_text()
+    p = tmp_path / "structure.toml"
+    p.write_text(text + '\n[structure]\nbearing_length = "0.1 m"\n')
     with pytest.raises(InputError) as err:
-        read_lander(TRIPOD)
-    assert err.value.key == "legs.kind" and err.value.found == "tripod"
+        read_lander(p)
+    assert err.value.key == "structure.bearing_length"
+    p.write_text(text.replace("[members.primary_strut]", "[members.primary_upper]"))
+    with pytest.raises(InputError) as err:
+        read_lander(p)
+    assert err.value.key == "members.primary_upper"
 
 
 def test_massless_tripod_footpads_are_refused_where_they_can_slip():
