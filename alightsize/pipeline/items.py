@@ -15,7 +15,7 @@ from alightsize.common.config import Node
 from alightsize.common.typed import Number, Table, refuse, validate
 from alightsize.common.errors import InputError
 from alightsize.common.trace import Step
-from alightsize.loads.quasi_static import Unloaded
+from alightsize.loads.quasi_static import ForceRef, LoadReference, LoadsResult, Unloaded, resolve
 from alightsize.model.materials import Material, lookup, require
 from alightsize.model.sections import SHAPES, Section, geometry_error, read_section
 from alightsize.weights.methods import WeightSpec, read_weight
@@ -43,6 +43,7 @@ class Item:
     weight: WeightSpec | None
     size: SizeSpec | None = None
     note: str = ""
+    where: str = ""                   # its key path as written, `item["Upper Truss"]` or `members.lower_tube`
 
     def evaluate(self, section: Section | None = None) -> list[Outcome]:
         return [c.evaluate(section or self.section, self.material) for c in self.checks]
@@ -129,10 +130,7 @@ def read_item(node: Node, materials: dict[str, Material], required_default: floa
     length = node.quantity("length", "length", default=None)
     read: list[Check] = []
     for c in node.tables("check", optional=True, label="kind"):
-        try:
-            check = read_check(c, rules)
-        except Unloaded:                       # a derived check of a member never loaded in that sense
-            continue
+        check = read_check(c, rules)
         if check.params.get("material") is not None:      # a bearing check's lug: a material of the library
             lug = lookup(materials, c)
             require(lug, "yield_strength", InputError(c.file, c.key("material"), "", ""))
@@ -146,31 +144,60 @@ def read_item(node: Node, materials: dict[str, Material], required_default: floa
     size = _read_size(s_node, section, checks) if s_node else None
     note = node.string("note", "")
     node.finish()
-    if not checks and weight is None:
-        raise node.error("check", "at least one [[item.check]] or an [item.weight]", "neither")
-    item = Item(name, count, mat, section, length, checks, required, weight, size, note)
-    _validate(item, node)
+    item = Item(name, count, mat, section, length, checks, required, weight, size, note, node.path)
+    _validate(item, node.file)
     return item
 
 
-def _validate(item: Item, node: Node) -> None:
-    """Evaluate once so a missing section property or material property is reported as bad input."""
+def _resolved(value, res: LoadsResult, file: str, refs: list[LoadReference]):
+    """A check parameter with its envelope references (`ForceRef`, read as 1 N) given their values."""
+    if isinstance(value, ForceRef):
+        refs.append(resolve(res, value, file))
+        return refs[-1].value
+    if isinstance(value, tuple):
+        return tuple(_resolved(v, res, file, refs) for v in value)
+    return value
+
+
+def with_loads(item: Item, res: LoadsResult | None, file: str) -> tuple[Item, list[LoadReference]]:
+    """The item with its checks' envelope references resolved from `res`, and the references; a check of a member
+    never loaded in an optional reference's sense is dropped (`Unloaded`). Validated again at the loads found."""
+    if res is None:                     # without loads no reference was read (validate_references refuses it)
+        return item, []
+    checks, refs = [], []
     for check in item.checks:
-        where = InputError(node.file, check.where, "", "")
+        found: list[LoadReference] = []
+        try:
+            params = {k: _resolved(v, res, file, found) for k, v in check.params.items()}
+        except Unloaded:
+            continue
+        checks.append(replace(check, params=params))
+        refs += found
+    item = replace(item, checks=tuple(checks))
+    _validate(item, file)
+    return item, refs
+
+
+def _validate(item: Item, file: str) -> None:
+    """Evaluate once so a missing section property or material property is reported as bad input."""
+    if not item.checks and item.weight is None:
+        raise InputError(file, f"{item.where}.check", "at least one [[item.check]] or an [item.weight]", "neither")
+    for check in item.checks:
+        where = InputError(file, check.where, "", "")
         for prop in check.needs():
             require(item.material, prop, where)
         try:
             bad = out_of_range(check, item.section, item.material)
             if bad:
                 key, expected, found = bad
-                raise InputError(node.file, node.key(key) if key.startswith("section.") else f"{check.where}.{key}",
-                                 expected, found)
+                raise InputError(file, f"{item.where}.{key}" if key.startswith("section.") else
+                                 f"{check.where}.{key}", expected, found)
             check.evaluate(item.section, item.material)
         except (KeyError, AttributeError, TypeError) as exc:
-            raise InputError(node.file, check.where, f"the item's [section] to give what check {check.kind!r} needs "
+            raise InputError(file, check.where, f"the item's [section] to give what check {check.kind!r} needs "
                              f"(shapes: {', '.join(SHAPES)})", f"missing {exc}") from None
         except (ValueError, ZeroDivisionError) as exc:
-            raise InputError(node.file, check.where, "geometry for which the formula is defined", str(exc)) from None
+            raise InputError(file, check.where, "geometry for which the formula is defined", str(exc)) from None
 
     size, section = item.size, item.section
     if size is not None:
@@ -179,7 +206,7 @@ def _validate(item: Item, node: Node) -> None:
             for check in item.checks:
                 bad = out_of_range(check, section.with_dim(size.dimension, value), item.material)
                 if bad:
-                    raise InputError(node.file, node.key("size"), f"a size range keeping {check.where} in its "
+                    raise InputError(file, f"{item.where}.size", f"a size range keeping {check.where} in its "
                                      f"formula's range: {bad[1]}",
                                      f"{size.dimension} {units.fmt(value, 'length', 'US')}: {bad[2]}")
 
@@ -187,7 +214,7 @@ def _validate(item: Item, node: Node) -> None:
         try:
             w, _ = item.weight.evaluate(item.section, item.material, item.length)
         except (KeyError, AttributeError, TypeError) as exc:
-            raise InputError(node.file, item.weight.where, "the sizes this weight method needs (given here or in the "
+            raise InputError(file, item.weight.where, "the sizes this weight method needs (given here or in the "
                              "item's [section] and length)", f"missing {exc}") from None
         if not w > 0:
-            raise InputError(node.file, item.weight.where, "a positive weight", f"{w!r} kg")
+            raise InputError(file, item.weight.where, "a positive weight", f"{w!r} kg")

@@ -329,14 +329,14 @@ def read_lander(path: str | Path, overrides: dict | None = None, root: Node | No
     if not nodes:
         raise root.error("members", "at least one [members.NAME] table or [[item]]", "neither")
     validate_references(root, loads)
-    read_items(tuple(nodes), mats, req.required, root, rules)
+    items = read_items(tuple(nodes), mats, req.required, root, rules)
     root.finish()
     study = landing_cases(document, name, req, len(scene.scene.legs), scene_over)
     member_loads = (partial(telescoping_dynamic_envelope, leg=loads.telescoping) if loads.telescoping
                     else partial(dynamic_envelope, truss=loads.cases[0].truss))
     landings = LandingSpec(study, envelopes, "criteria", member_loads)
     spec = DesignSpec(path, name, title, scene.scene.mass, len(scene.scene.legs), units, req.required, req.decimals,
-                      mats, tuple(nodes), loads, landings, req.weight_goal, rules)
+                      mats, items, loads, landings, req.weight_goal, rules)
     return Lander(spec, scene, req, document)
 
 

@@ -84,9 +84,9 @@ def test_free_cell_parameters_and_crushable_weight():
     assert max(curve.force[:-1]) == pytest.approx(12e3, rel=1e-12)
     assert curve.deflection[-2] == pytest.approx(0.6, rel=1e-12)
     hc = library()["al-honeycomb"]
-    node = next(n for n in lander.spec.items if n.data["name"] == "Axial honeycomb")
-    w = node.data["weight"]
-    area, length = (float(w[k].split()[0]) for k in ("area", "length"))
+    item = next(i for i in lander.spec.items if i.name == "Axial honeycomb")
+    assert item.weight is not None
+    area, length = (item.weight.params[k] for k in ("area", "length"))
     expected = hc.density * 12e3 * 0.6 / (hc.crush_strength * hc.stroke_fraction)
     assert area * length * hc.density == pytest.approx(expected, rel=1e-12)
     # the report's own axial core: 3750 lbf over a 1.074 in diameter is the material's crush strength (0.1 %,
