@@ -194,7 +194,7 @@ def run_design(cfg: DesignConfig | DesignSpec, landings_dir=None, progress: bool
     sizings, judged = [], []
     for item in cfg.items:
         if size and item.size is not None:
-            assert item.section is not None          # `_read_size` refuses a size without a section
+            assert item.section is not None          # `_size_spec` refuses a size without a section
             s = size_item(item)
             sizings.append(s)
             item = item.with_section(item.section.with_dim(s.dimension, s.sized))

@@ -12,7 +12,7 @@ from alightsize.checks.rules import Rules
 from pydantic import model_validator
 
 from alightsize.common.config import Node
-from alightsize.common.typed import Number, Table, refuse, validate
+from alightsize.common.typed import Integer, Number, Quantities, Quantity, Table, refuse, validate
 from alightsize.common.errors import InputError
 from alightsize.common.trace import Step
 from alightsize.loads.quasi_static import ForceRef, LoadReference, LoadsResult, Unloaded, resolve
@@ -61,38 +61,6 @@ class Item:
         return replace(self, section=section)
 
 
-def _read_size(node: Node, section: Section | None, checks: tuple[Check, ...]) -> SizeSpec:
-    """The size table; refused when a printed property or a check's own value would not follow the size."""
-    if section is None:
-        raise node.error("dimension", "an item with a [section] to size", "no section")
-    if section.overrides:
-        raise node.error("dimension", "a section without printed area/inertia/c overrides (they would not follow the "
-                         "size)", ", ".join(section.overrides))
-    dim = node.string("dimension", choices=tuple(section.dims))
-    for check in checks:
-        key = next((k for k, d in check.replaces.items() if d == dim), None)
-        if key is not None:
-            raise node.error("dimension", f"a dimension no check gives its own value for ({check.where}.{key} would "
-                             f"keep its value while the {dim} is sized: remove it, or size another dimension)",
-                             repr(dim))
-    gauges = tuple(sorted(node.parse_quantity("gauges", g, "length") for g in node.raw("gauges", [])))
-    if gauges:
-        low, high = gauges[0], gauges[-1]
-    else:
-        low, high = node.quantity("min", "length"), node.quantity("max", "length")
-        if low >= high:
-            raise node.error("max", "max greater than min", f"min {low:g} m, max {high:g} m")
-    for key, value in (("gauges" if gauges else "min", low), ("gauges" if gauges else "max", high)):
-        problem = geometry_error(section.with_dim(dim, value))
-        if problem:
-            written = node.raw(key)[0] if gauges else node.raw(key)     # lengths shown in the unit written here
-            others = ", ".join(f"{n} {units.in_unit_of(v, written)}" for n, v in section.dims.items() if n != dim)
-            raise node.error(key, f"sizes that keep a real section: {problem[1]}",
-                             f"{dim} {units.in_unit_of(value, written)} with {others}")
-    node.finish()
-    return SizeSpec(dim, low, high, gauges)
-
-
 class RequiredFactor(Table):
     """A table's `required_design_factor`: finite, positive and at least 1, or below 1 only with
     `allow_below_one = true` beside it (below 1 a member passes at stresses above its allowable, so the override
@@ -114,20 +82,80 @@ class RequiredFactor(Table):
         return self
 
 
-def read_required(node: Node, default: float) -> float:
-    """The `required_design_factor` of a Node-read table (`default` when it gives none): RequiredFactor."""
-    data = {k: node.raw(k) for k in RequiredFactor.model_fields if node.has(k)}
-    required = validate(RequiredFactor, data, node.file, node.path).required_design_factor
-    return default if required is None else required
+class Size(Table):
+    """An item's `size` table: the dimension varied, over [min, max] or standard `gauges` (m)."""
+
+    dimension: str
+    min: Annotated[float, Quantity("length")] | None = None
+    max: Annotated[float, Quantity("length")] | None = None
+    gauges: Annotated[tuple[float, ...], Quantities("length", "positive", minimum=1)] = ()
+
+    @model_validator(mode="after")
+    def _range(self):
+        if self.gauges:
+            both = next((k for k in ("min", "max") if getattr(self, k) is not None), None)
+            if both:
+                raise refuse("either gauges or min and max", f"gauges and {both}", both)
+            return self
+        for k in ("min", "max"):
+            if getattr(self, k) is None:
+                raise refuse("this key to be present", "nothing", k)
+        if self.min >= self.max:
+            raise refuse("max greater than min", f"min {self.min:g} m, max {self.max:g} m", "max")
+        return self
+
+
+class ItemTable(RequiredFactor):
+    """An `[[item]]` table (docs/reference/design.md); its section, checks and weight are read by their kinds'
+    readers (model.sections, checks.kinds, weights.methods)."""
+
+    name: str
+    count: Annotated[int, Integer(1)] = 1
+    material: str
+    length: Annotated[float, Quantity("length")] | None = None
+    section: dict | None = None
+    check: list[dict] = []
+    weight: dict | None = None
+    size: Size | None = None
+    note: str = ""
+
+
+def _size_spec(t: Size, node: Node, section: Section | None, checks: tuple[Check, ...]) -> SizeSpec:
+    """The size of an item; refused when a printed property or a check's own value would not follow the size, or
+    an end of the range leaves no real section."""
+    if section is None:
+        raise node.error("dimension", "an item with a [section] to size", "no section")
+    if section.overrides:
+        raise node.error("dimension", "a section without printed area/inertia/c overrides (they would not follow the "
+                         "size)", ", ".join(section.overrides))
+    dim = t.dimension
+    if dim not in section.dims:
+        raise node.error("dimension", "one of " + ", ".join(repr(c) for c in section.dims), repr(dim))
+    for check in checks:
+        key = next((k for k, d in check.replaces.items() if d == dim), None)
+        if key is not None:
+            raise node.error("dimension", f"a dimension no check gives its own value for ({check.where}.{key} would "
+                             f"keep its value while the {dim} is sized: remove it, or size another dimension)",
+                             repr(dim))
+    gauges = tuple(sorted(t.gauges))
+    low, high = (gauges[0], gauges[-1]) if gauges else (t.min, t.max)
+    assert low is not None and high is not None          # Size requires min and max without gauges
+    for key, value in (("gauges" if gauges else "min", low), ("gauges" if gauges else "max", high)):
+        problem = geometry_error(section.with_dim(dim, value))
+        if problem:
+            written = node.data[key][0] if gauges else node.data[key]     # lengths shown in the unit written here
+            others = ", ".join(f"{n} {units.in_unit_of(v, written)}" for n, v in section.dims.items() if n != dim)
+            raise node.error(key, f"sizes that keep a real section: {problem[1]}",
+                             f"{dim} {units.in_unit_of(value, written)} with {others}")
+    return SizeSpec(dim, low, high, gauges)
 
 
 def read_item(node: Node, materials: dict[str, Material], required_default: float, rules: Rules) -> Item:
-    name = node.string("name")
-    count = node.integer("count", 1)
-    mat = lookup(materials, node)
-    sec_node = node.table("section", optional=True)
-    section = read_section(sec_node) if sec_node else None
-    length = node.quantity("length", "length", default=None)
+    """An `[[item]]` table (or a member's, as an item): ItemTable, then its section, checks, weight and size."""
+    t = validate(ItemTable, node.data, node.file, node.path)
+    if t.material not in materials:
+        raise node.error("material", "one of the materials " + ", ".join(sorted(materials)), repr(t.material))
+    section = read_section(node.table("section")) if t.section is not None else None
     read: list[Check] = []
     for c in node.tables("check", optional=True, label="kind"):
         check = read_check(c, rules)
@@ -137,14 +165,11 @@ def read_item(node: Node, materials: dict[str, Material], required_default: floa
             check = replace(check, params={**check.params, "material": lug})
         read.append(check)
     checks = tuple(read)
-    required = read_required(node, required_default)
-    w_node = node.table("weight", optional=True)
-    weight = read_weight(w_node, materials) if w_node else None
-    s_node = node.table("size", optional=True)
-    size = _read_size(s_node, section, checks) if s_node else None
-    note = node.string("note", "")
-    node.finish()
-    item = Item(name, count, mat, section, length, checks, required, weight, size, note, node.path)
+    required = required_default if t.required_design_factor is None else t.required_design_factor
+    weight = read_weight(node.table("weight"), materials) if t.weight is not None else None
+    size = _size_spec(t.size, node.table("size"), section, checks) if t.size is not None else None
+    item = Item(t.name, t.count, materials[t.material], section, t.length, checks, required, weight, size, t.note,
+                node.path)
     _validate(item, node.file)
     return item
 
@@ -201,7 +226,7 @@ def _validate(item: Item, file: str) -> None:
 
     size, section = item.size, item.section
     if size is not None:
-        assert section is not None                  # `_read_size` refuses a size without a section
+        assert section is not None                  # `_size_spec` refuses a size without a section
         for value in (size.low, size.high):         # sizes stay in every formula's range
             for check in item.checks:
                 bad = out_of_range(check, section.with_dim(size.dimension, value), item.material)
