@@ -17,16 +17,12 @@ each column name, as docs/contracts.md names the JSON fields) and `.plot(kind)` 
 
 from __future__ import annotations
 
-from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
+
+from alightsize.common.version import __version__
 
 __all__ = ["__version__", "audit", "design", "loads", "read_design", "read_lander", "simulate", "sweep", "synthesize",
            "write_design"]
-
-try:
-    __version__ = version("alightsize")
-except PackageNotFoundError:                           # run from a source tree without installing
-    __version__ = "0+unknown"
 
 
 def read_lander(path: str | Path):

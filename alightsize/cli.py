@@ -11,7 +11,7 @@ import traceback
 import warnings
 from pathlib import Path
 
-from alightsize import __version__
+from alightsize.common.version import __version__
 from alightsize.common.errors import InputError, InputWarning
 from alightsize.common.compile_notice import compile_notice
 from alightsize.common.lock import output_folder

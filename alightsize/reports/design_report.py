@@ -12,7 +12,7 @@ from pathlib import Path
 import pandas as pd
 from openpyxl import Workbook
 
-from alightsize import __version__
+from alightsize.common.version import __version__
 from alightsize.common.figures import save_png
 from alightsize.common.trace import Step
 from alightsize.common.units import fmt, to_display, unit_label
