@@ -8,8 +8,8 @@ from math import isfinite
 
 import pandas as pd
 
-from alightsize.checks.audit import CheckRecord, run_audit
-from alightsize.checks.sizing import Sizing, size_item
+from alightsize.pipeline.audit import CheckRecord, run_audit
+from alightsize.pipeline.sizing import Sizing, size_item
 from alightsize.common.units import fmt
 from alightsize.landings.criteria import violation_kinds
 from alightsize.pipeline.config import DesignConfig, DesignSpec, prepare
