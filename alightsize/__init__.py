@@ -44,8 +44,8 @@ def design(config, out: str | Path | None = None, progress: bool = False):
     """Run the design pipeline on a lander (from `read_lander`), a design config or a path to either: App. III
     envelopes, landing cases (stored in `out`/landings, resumable), member loads, checks and sizing, weights,
     verdict; with `out` also write the reports there. Returns a DesignResult (`.ok`, `.verdict()`,
-    `.summary_lines()`, `.to_pandas()`: "checks", "weights", "landings", "sizing"; `.plot()`: "factors",
-    "weights").
+    `.summary_lines()`, `.to_pandas()`: "checks", "weights", "landings", "sizing", "load_references";
+    `.plot()`: "factors", "weights").
 
         res = alightsize.design("examples/affdl-tr-66-33/telescoping.toml")
         res.verdict(), res.to_pandas()["checks"][["item", "design_factor", "ok"]]
