@@ -409,7 +409,7 @@ def read_lander(path: str | Path, overrides: dict | None = None, root: Node | No
     if not nodes:
         raise root.error("members", "at least one [members.NAME] table or [[item]]", "neither")
     validate_references(root, loads)
-    read_items(tuple(nodes), mats, req.required, root, rules)
+    items = read_items(tuple(nodes), mats, req.required, root, rules)
     root.finish()
     if req.terrain.soil is not None:
         find_soil(req.terrain.soil, path.parent, str(path), "requirements.terrain.soil")
@@ -421,7 +421,7 @@ def read_lander(path: str | Path, overrides: dict | None = None, root: Node | No
                                  telescoping=loads.telescoping)
     landings = LandingSpec(study, envelopes, "criteria", member_loads)
     spec = DesignSpec(path, name, title, scene.scene.mass, len(scene.scene.legs), units, req.required, req.decimals,
-                      mats, tuple(nodes), loads, landings, req.weight_goal, rules)
+                      mats, items, loads, landings, req.weight_goal, rules)
     return Lander(spec, scene, req, document)
 
 
