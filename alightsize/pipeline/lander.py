@@ -29,6 +29,7 @@ from alightsize_sim.articulated_leg import ArticulatedLeg
 from alightsize_sim.landing import G0
 from alightsize_sim.rigid_body import quat_matrix
 from alightsize_sim.telescoping_leg import TelescopingLeg as SimTelescopingLeg
+from alightsize_sim.tripod_leg import TripodLeg
 from alightsize_sim.crush_curve import CrushCurve
 
 from alightsize.common.config import SEED_MAX, Node, load_toml
@@ -206,9 +207,11 @@ def landing_cases(scene: SceneDocument, name: str, req: Requirements, legs: int,
                  "initial.velocity[2]", False, mc.seed, plot)
 
 
-def rest_footpad(leg: SimTelescopingLeg | ArticulatedLeg) -> np.ndarray:
-    """A leg's footpad at rest (hanging straight; the parallelogram at its initial psi, the peg leg straight down),
-    m in principal axes from the centre of gravity."""
+def rest_footpad(leg: SimTelescopingLeg | ArticulatedLeg | TripodLeg) -> np.ndarray:
+    """A leg's footpad at rest (hanging straight; the parallelogram at its initial psi, the peg leg straight down;
+    a tripod's as given), m in principal axes from the centre of gravity."""
+    if isinstance(leg, TripodLeg):
+        return np.asarray(leg.footpad, float)
     if isinstance(leg, ArticulatedLeg):
         s = np.array(articulated_footpad(leg.geometry, 0.0, 0.0, leg.psi0), float)
     elif isinstance(leg, SimTelescopingLeg):

@@ -9,9 +9,9 @@ from conftest import ROOT
 
 from alightsize.common.config import load_toml
 from alightsize.common.errors import InputError
-from alightsize.loads.quasi_static import attach, run_loads
+from alightsize.loads.quasi_static import run_loads
 from alightsize.loads.telescoping import TelescopingLeg
-from alightsize.pipeline.config import read_items
+from alightsize.pipeline.items import with_loads
 from alightsize.pipeline.lander import read_lander
 from alightsize.pipeline.outrigger import outrigger_arms
 
@@ -50,9 +50,7 @@ def test_lunar_outrigger_length_weight_and_loads():
     sqrt(2) 4 kN 0.8/1.6 = 2.828 kN, with arms L and L + rho = 3.0 m, and a fixed-free column of 2 L. 1e-12."""
     spec = read_lander(LUNAR).spec
     loads = run_loads(spec.loads)
-    root = load_toml(LUNAR)
-    attach(root, loads)
-    items = {i.name: i for i in read_items(spec.items, spec.materials, spec.required, root, spec.rules)}
+    items = {i.name: with_loads(i, loads, str(LUNAR))[0] for i in spec.items}
     out = items["outrigger"]
     assert out.length == pytest.approx(1.4, rel=1e-12)
     rho_al = spec.materials["7178-t6"].density
