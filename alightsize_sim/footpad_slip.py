@@ -41,7 +41,7 @@ from numba import njit, types
 from numba.extending import overload
 
 from .footpad_mass import FLOOR, LOCK, PadModel, is_pad, pad_force
-from .legs import leg_force, main_set
+from .legs import leg_force, slack
 from .terrain import relief
 from .vec3 import mv
 
@@ -155,7 +155,7 @@ def _at(sl, s):
     geo, cells, i, mem, shape, mu, P0, d0, d1, r, R, v, w, P, defl, frc, rte, X = sl
     _place(geo[9], P0, d0, d1, s, P)
     fe12, fe3, t0, t1, _, _, _, _ = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
-    if defl[0] < main_set(cells, i, mem):
+    if slack(geo, cells, i, mem, defl, X, P, R) < 0.0:
         return -1.0, 0.0, False
     _, n0, n1, n2 = relief(geo[9], P[0], P[1])
     if n2 < 1.0 or relief(geo[9], P0[0], P0[1])[3] < 1.0:

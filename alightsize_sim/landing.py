@@ -1,4 +1,4 @@
-"""One landing of a rigid capsule on telescoping or articulated legs (AFFDL-TR-66-33 Sec. V).
+"""One landing of a rigid capsule on telescoping, articulated or tripod legs (AFFDL-TR-66-33 Sec. V).
 
 `simulate(scene, controls)` places the capsule so that its lowest footpad touches the terrain at t = 0 and
 runs the compiled step loop (`landing_kernel.run`; free flight of an axisymmetric capsule in closed form).
@@ -19,10 +19,11 @@ from .stability import quiescence_momenta
 from .articulated_leg import ArticulatedLeg
 from .footpad_mass import NB, PadModel, n_states, pad_model
 from .soil import Soil
-from .legs import free_footpad, initial_shape, pack
+from .legs import TRIPOD, free_footpad, initial_shape, pack, with_terrain
 from .terrain import Terrain, clearance
 from .terrain import pack as pack_terrain
 from .telescoping_leg import TelescopingLeg
+from .tripod_leg import TripodLeg, strut_axial_forces
 
 G0 = 9.80665
 
@@ -40,7 +41,7 @@ class Scene:
 
     mass: float
     inertia: np.ndarray
-    legs: tuple[TelescopingLeg | ArticulatedLeg, ...]
+    legs: tuple[TelescopingLeg | ArticulatedLeg | TripodLeg, ...]
     gravity: np.ndarray
     v0: np.ndarray
     q0: np.ndarray
@@ -59,6 +60,9 @@ class Scene:
         if self.soil is not None and not (self.footpad_mass > 0.0 and self.footpad_diameter > 0.0):
             raise ValueError("a scene on soil needs footpads with mass and a diameter (footpad_mass, "
                              "footpad_diameter > 0)")
+        if any(isinstance(leg, TripodLeg) for leg in self.legs) and not self.footpad_mass > 0.0 and not holds(self):
+            raise ValueError("tripod legs on ground they can slip on need footpads with mass (footpad_mass > 0): "
+                             "their massless slide does not converge (docs/simulator.md)")
 
 
 @dataclass(frozen=True)
@@ -109,7 +113,7 @@ class Result:
     contact: np.ndarray                # (n, legs)
     status: str
     bottomed: tuple | None             # (time, leg, cell) of the first bottoming
-    struck: int | None                 # the leg whose intermediate member struck the terrain
+    struck: int | None                 # the leg whose intermediate member struck the terrain (a tripod: folded flat)
     cell_energy: np.ndarray            # (legs, cells) J
     memory: np.ndarray                 # (legs, cells, 2) final dmax, fmax
     steps: int
@@ -121,6 +125,9 @@ class Result:
     energy: dict
 
     gravity: np.ndarray
+    struts: np.ndarray | None = None   # (n, legs, 3) tripod legs' strut axial forces (N, tension positive: primary,
+                                       # secondary 1, 2; tripod_leg.strut_axial_forces), NaN for other kinds; None
+                                       # without tripods
 
     @property
     def accel_g(self) -> np.ndarray:
@@ -137,7 +144,8 @@ def accel_g(y: np.ndarray, dy: np.ndarray, gravity: np.ndarray) -> np.ndarray:
 
 HELD_FRICTION = 1e3   # a loaded footpad would slide only under an in-plane force 1,000 times the normal one
 STATUS = {lk.END: "end", lk.BOTTOMED: "bottomed", lk.TIPPED: "tipped", lk.BODY: "body_contact",
-          lk.QUIET: "quiet", lk.FAILED: "failed", lk.STABLE: "stable", lk.MEMBER: "member_strike"}
+          lk.QUIET: "quiet", lk.FAILED: "failed", lk.STABLE: "stable", lk.MEMBER: "member_strike",
+          lk.FOLDED: "folded_flat"}
 
 
 def holds(scene: Scene) -> bool:
@@ -149,7 +157,8 @@ def holds(scene: Scene) -> bool:
 def variant(scene: Scene) -> str:
     """The compiled variant a scene runs on, in words: its leg kinds and footpad model (each compiles once per
     machine: numba specializes the kernel on them)."""
-    kinds = sorted({"articulated" if isinstance(leg, ArticulatedLeg) else "telescoping" for leg in scene.legs})
+    kinds = sorted({"articulated" if isinstance(leg, ArticulatedLeg) else "tripod" if isinstance(leg, TripodLeg)
+                    else "telescoping" for leg in scene.legs})
     pads = ("footpads with mass on soil" if scene.soil is not None else "footpads with mass" if scene.footpad_mass > 0
             else "footpads that hold" if holds(scene) else "sliding footpads")
     return f"{' and '.join(kinds)} legs, {pads}"
@@ -168,7 +177,7 @@ class _Run:
     def __init__(self, scene: Scene, ctl: Controls):
         self.scene, self.ctl = scene, ctl
         geo, self.cells = pack(scene.legs)
-        self.geo = (*geo, pack_terrain(scene.terrain))         # geo[9]: the terrain (alightsize_sim.terrain)
+        self.geo = with_terrain(geo, pack_terrain(scene.terrain))     # geo[9]: the terrain (alightsize_sim.terrain)
         n, C = self.cells[2].shape
         self.n, self.C = n, C
         self.bottoming = np.full((n, C), np.inf)
@@ -308,8 +317,12 @@ def simulate(scene: Scene, ctl: Controls) -> Result:
     bottomed = (float(rs[lk.S_BOT_T]), int(rs[lk.S_BOT_LEG]), int(rs[lk.S_BOT_CELL])) if rs[lk.S_BOT_T] >= 0 else None
     res = Result(run.H_t[:k].copy(), Y[:, :NB], run.H_dy[:k, :NB].copy(), run.H_d[:k].copy(), run.H_f[:k].copy(),
                  run.H_X[:k].copy(), run.H_P[:k].copy(), velocity, run.H_c[:k].copy(), STATUS[status], bottomed,
-                 int(rs[lk.S_STRUCK]) if status == lk.MEMBER else None, cell,
+                 int(rs[lk.S_STRUCK]) if status in (lk.MEMBER, lk.FOLDED) else None, cell,
                  run.mem.copy(), int(run.cnt[lk.K_STEPS]), int(run.cnt[lk.K_REJECTED]),
                  int(run.cnt[lk.K_RHS]), int(run.cnt[lk.K_EVENTS]), int(run.cnt[lk.K_TRIALS]), wall, en,
                  scene.gravity)
+    tripods = run.geo[7] == TRIPOD
+    if np.any(tripods):
+        res.struts = np.full((k, n, 3), np.nan)
+        res.struts[:, tripods] = strut_axial_forces(res.forces[:, tripods, :5])
     return res

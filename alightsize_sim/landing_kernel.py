@@ -27,7 +27,7 @@ from .footpad_mass import (FACE, FLOOR, STARTED, ground_event, integrates_damper
 from .footpad_slip import contact_force, slides_by_position, slip_events
 from .rigid_body import free_flight, quat_matrix, quat_rate
 from .stability import hanging_margin, quiescence_momenta, quiescence_update, stable_by_energy, tipping_margins
-from .legs import TELESCOPING, free_footpad, leg_force, lift_shape, main_set, member_strike
+from .legs import TELESCOPING, folded, free_footpad, leg_force, lift_shape, member_strike, slack
 from .telescoping_leg import aim
 from .terrain import clearance
 from .vec3 import cross, mtv, mv
@@ -43,7 +43,7 @@ D = np.array([-12715105075 / 11282082432, 0, 87487479700 / 32700410799, -1069076
               701980252875 / 199316789632, -1453857185 / 822651844, 69997945 / 29380423])   # dense output (CONTD5)
 
 # Statuses returned to the caller.
-END, BUFFER, BOTTOMED, TIPPED, BODY, QUIET, FAILED, STABLE, MEMBER = 0, 2, 3, 4, 5, 6, 7, 8, 9
+END, BUFFER, BOTTOMED, TIPPED, BODY, QUIET, FAILED, STABLE, MEMBER, FOLDED = 0, 2, 3, 4, 5, 6, 7, 8, 9, 10
 # Controls (float array).
 C_TFINAL, C_RTOL, C_ATOL, C_FIXED, C_MAXSTEP, C_EVENTTOL, C_STOPBOTTOM, C_TIPCOS, C_CLEAR, C_FLIGHT, \
     C_QUIET_FRAC, C_TAUS, C_PERIOD, C_ENERGY_T, C_BAND = range(15)
@@ -219,8 +219,8 @@ def rhs(arrays, y, dy, work):
 @_inner
 def _events(S, y, W, g, band):
     """Event functions g ((3 + 2C) n); an event is a crossing of zero from above. g[i]: leg i's free footpad height
-    (in the air) or main-cell compression beyond its set less the reach deficit (on the ground, from the leg
-    state dt, mt already computed at y). An unarmed leg on the ground lifts off only `band` past zero (ctl[C_BAND];
+    (in the air) or main-cell compression beyond its set (legs.slack) less the reach deficit (on the ground, from
+    the leg state at y). An unarmed leg on the ground lifts off only `band` past zero (ctl[C_BAND];
     0.0 for the raw values, a float so that numba compiles one version, not one per literal flag): its main cell
     is then short of its set, where it carries no force, so a footpad grazing the terrain stays put at zero force
     until it clearly leaves instead of switching every step. Not so for a footpad slid to the edge of its reach
@@ -245,7 +245,7 @@ def _events(S, y, W, g, band):
     located = slip_events(mu)
     for i in range(n):
         if contact[i]:
-            g[i] = dt[i, 0] - main_set(cells, i, mem[i]) - mt[i, 1]
+            g[i] = slack(geo, cells, i, mem[i], dt[i], W.Xt[i], W.Pt[i], R) - mt[i, 1]
         else:
             foot = free_footpad(geo, cells, i, mem[i], shape[i], y[0:3], R)
             g[i] = foot[2] - pad_ground(mu, y, i, n, geo[9], foot[0], foot[1])
@@ -407,7 +407,8 @@ def _switch(S, y, which, W):
         if fresh or W.mt[which, 1] > 0.0:       # left on touching, or at the edge of its reach still pushed: LOCKED
             armed[which] = LOCKED
         else:
-            armed[which] = BANDED if dt[which, 0] < main_set(cells, which, mem[which]) else 0
+            gone = slack(geo, cells, which, mem[which], dt[which], Xt[which], P[which], R)
+            armed[which] = BANDED if gone < 0.0 else 0
         pad_switch(mu, y, which, P, sliding, False, Xt, R, geo[9])
         shape[which, 0], shape[which, 1], shape[which, 2] = lift_shape(geo, cells, which, mem[which], alpha, beta, psi,
                                                                        dt[which, 0], y[0:3], R)
@@ -478,6 +479,10 @@ def _monitor(S, y, t, dt_step):
     if struck >= 0:
         run[S_STRUCK] = struck
         return MEMBER
+    flat = folded(geo, contact, P, y[0:3], R)
+    if flat >= 0:
+        run[S_STRUCK] = flat
+        return FOLDED
     for b in range(body.shape[0]):
         p0, p1, p2 = mv(R, body[b, 0], body[b, 1], body[b, 2])
         if clearance(geo[9], y[0] + p0, y[1] + p1, y[2] + p2) < ctl[C_CLEAR]:

@@ -19,7 +19,17 @@ carries no torsion); small deflections of the members themselves (equilibrium on
 struts' lengths changing only through their cartridges). Strut forces are tension positive, lengths L =
 (primary Lp, secondary l1, l2), the footpad P. Virtual work closes: F . dP = sum T_i dL_i (Hibbeler, Statics,
 sec. 11.2), so the strut forces are T = G^-T F with G = dL/dP, and the footpad force of given strut forces is
-G^T T. Pure numpy; the simulator does not use this module yet (docs/notes/tripod-design.md).
+G^T T. The kinematics are scalar, allocation-free compiled functions on the leg's packed array (`packed`: the
+hardpoints, the rest lengths, and knee offset, secondary_attach, branch), which the simulator's leg functions
+below call too (the leg's row of geo[10], docs/simulator.md); the numpy functions here wrap them.
+
+In the simulator the leg is massless with its footpad held at P (the slip search or the footpad's state places
+it): the strut lengths follow from P in closed form, the five cell deflections and rates from them and G, and the
+force on the capsule is X = G^T T, whose power X . (footpad velocity relative to the body) equals the cells'
+power exactly (virtual work), so the energy audit closes with no extra term. The leg's shape is its three strut
+lengths (on the ground those of the last accepted step; in the air those it left with: a free leg whose struts
+sit between their compression and tension sets is a mechanism, and keeps them). It lifts off where the ground's
+normal push falls to zero (`slack`).
 """
 
 from __future__ import annotations
@@ -28,8 +38,12 @@ from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
+from numba import njit
 
 from .crush_cell import CellModel
+from .telescoping_leg import cell_force
+from .terrain import relief
+from .vec3 import cross, mtv, mv
 
 MIN_DET = 0.02   # least |u . (e1 x e2)| of the strut directions at the joint (1 when orthogonal, 0 when coplanar)
 
@@ -93,6 +107,21 @@ class TripodLeg:
                              f"past the knee ({s * self.rest_primary_length:.4g} m up from the footpad)")
 
     @property
+    def attach(self) -> np.ndarray:
+        """The primary hardpoint: where the leg stands round the capsule (its azimuth orders the legs)."""
+        return self.primary_hardpoint
+
+    @property
+    def to_body(self) -> np.ndarray:
+        """Leg axes to principal axes: a tripod's leg axes are the principal axes."""
+        return np.eye(3)
+
+    @property
+    def reach(self) -> float:
+        """A length scale of the leg (m): its primary's rest length."""
+        return self.rest_primary_length
+
+    @property
     def is_cantilever(self) -> bool:
         return self.secondary_attach > 0.0
 
@@ -113,14 +142,13 @@ class TripodLeg:
     @cached_property
     def rest_lengths(self) -> np.ndarray:
         """Strut lengths at rest (Lp, l1, l2), m."""
-        return strut_lengths(self, self.footpad)
+        return self.packed[3].copy()
 
     @cached_property
     def branch(self) -> float:
         """+1 or -1: the side of the hardpoints' plane (normal (A1 - Ap) x (A2 - Ap)) the joint lies on at rest;
         the kinematics keep it (the branch below the body)."""
-        a, b, c = self.hardpoints
-        return float(np.sign(np.cross(b - a, c - a) @ (junction(self, self.footpad) - a)))
+        return float(self.packed[4, 2])
 
     @property
     def cells(self) -> tuple[CellModel, ...]:
@@ -128,75 +156,151 @@ class TripodLeg:
         c, t = self.secondary_compression, self.secondary_tension
         return (self.primary, c[0], t[0], c[1], t[1])
 
+    @cached_property
+    def packed(self) -> np.ndarray:
+        """(5, 3): the hardpoints (primary, secondaries), the rest lengths (Lp, l1, l2) and (knee offset a,
+        secondary_attach, branch): what the compiled kinematics take."""
+        t = np.zeros((5, 3))
+        t[:3] = self.hardpoints
+        t[4, 0], t[4, 1] = self.knee_offset, self.secondary_attach
+        t[3] = strut_lengths_at(t, *self.footpad)
+        t[4, 2] = trilateration_side(t, *junction_at(t, *self.footpad))
+        return t
+
 
 def _triple(leg: TripodLeg, P: np.ndarray) -> float:
     """u . (e1 x e2): the primary's and the secondaries' unit vectors at the joint (0 when coplanar)."""
-    u = _unit(P - leg.primary_hardpoint)[0]
-    j = junction(leg, P)
-    e1, e2 = (_unit(j - h)[0] for h in leg.secondary_hardpoints)
-    return float(u @ np.cross(e1, e2))
+    return fold_at(leg.packed, *np.asarray(P, float))
+
+
+@njit(cache=True)
+def _unit3(x0, x1, x2):
+    """(unit vector, length) of x; the zero vector for a zero x."""
+    n = np.sqrt(x0 * x0 + x1 * x1 + x2 * x2)
+    if n == 0.0:
+        return 0.0, 0.0, 0.0, 0.0
+    return x0 / n, x1 / n, x2 / n, n
+
+
+@njit(cache=True)
+def junction_at(t, p0, p1, p2):
+    """The joint (tuple) for the footpad at (p0, p1, p2), leg packed as t (`TripodLeg.packed`): the footpad
+    itself (inverted tripod, t[4, 1] = 0) or the knee, a = t[4, 0] from the primary hardpoint along the primary."""
+    if t[4, 1] <= 0.0:
+        return p0, p1, p2
+    u0, u1, u2, _ = _unit3(p0 - t[0, 0], p1 - t[0, 1], p2 - t[0, 2])
+    a = t[4, 0]
+    return t[0, 0] + a * u0, t[0, 1] + a * u1, t[0, 2] + a * u2
+
+
+@njit(cache=True)
+def strut_lengths_at(t, p0, p1, p2):
+    """Inverse kinematics (Lp, l1, l2) for the footpad at (p0, p1, p2)."""
+    j0, j1, j2 = junction_at(t, p0, p1, p2)
+    return (_unit3(p0 - t[0, 0], p1 - t[0, 1], p2 - t[0, 2])[3], _unit3(j0 - t[1, 0], j1 - t[1, 1], j2 - t[1, 2])[3],
+            _unit3(j0 - t[2, 0], j1 - t[2, 1], j2 - t[2, 2])[3])
+
+
+@njit(cache=True)
+def length_jacobian_at(t, p0, p1, p2):
+    """G = dL/dP at the footpad (p0, p1, p2), row by row as a 9-tuple. Inverted tripod: the unit strut vectors
+    u, e1, e2 (hardpoint to footpad). Cantilever: dLp/dP = u, dl_i/dP = (a/Lp) (e_i - (e_i . u) u), since the
+    knee moves by (a/Lp) (I - u u^T) dP."""
+    u0, u1, u2, Lp = _unit3(p0 - t[0, 0], p1 - t[0, 1], p2 - t[0, 2])
+    j0, j1, j2 = junction_at(t, p0, p1, p2)
+    a0, a1, a2, _ = _unit3(j0 - t[1, 0], j1 - t[1, 1], j2 - t[1, 2])
+    b0, b1, b2, _ = _unit3(j0 - t[2, 0], j1 - t[2, 1], j2 - t[2, 2])
+    if t[4, 1] <= 0.0:
+        return u0, u1, u2, a0, a1, a2, b0, b1, b2
+    k = t[4, 0] / Lp
+    ca, cb = a0 * u0 + a1 * u1 + a2 * u2, b0 * u0 + b1 * u1 + b2 * u2
+    return (u0, u1, u2, k * (a0 - ca * u0), k * (a1 - ca * u1), k * (a2 - ca * u2), k * (b0 - cb * u0),
+            k * (b1 - cb * u1), k * (b2 - cb * u2))
+
+
+@njit(cache=True)
+def fold_at(t, p0, p1, p2):
+    """u . (e1 x e2) at the joint for the footpad at (p0, p1, p2): 0 when the struts meet there coplanar."""
+    u0, u1, u2, _ = _unit3(p0 - t[0, 0], p1 - t[0, 1], p2 - t[0, 2])
+    j0, j1, j2 = junction_at(t, p0, p1, p2)
+    a0, a1, a2, _ = _unit3(j0 - t[1, 0], j1 - t[1, 1], j2 - t[1, 2])
+    b0, b1, b2, _ = _unit3(j0 - t[2, 0], j1 - t[2, 1], j2 - t[2, 2])
+    return u0 * (a1 * b2 - a2 * b1) + u1 * (a2 * b0 - a0 * b2) + u2 * (a0 * b1 - a1 * b0)
+
+
+@njit(cache=True)
+def trilateration_side(c, x0, x1, x2):
+    """+1 or -1: the side of the plane of the centres c[0:3] (normal (c1 - c0) x (c2 - c0)) the point x lies on
+    (0 on it)."""
+    n0 = (c[1, 1] - c[0, 1]) * (c[2, 2] - c[0, 2]) - (c[1, 2] - c[0, 2]) * (c[2, 1] - c[0, 1])
+    n1 = (c[1, 2] - c[0, 2]) * (c[2, 0] - c[0, 0]) - (c[1, 0] - c[0, 0]) * (c[2, 2] - c[0, 2])
+    n2 = (c[1, 0] - c[0, 0]) * (c[2, 1] - c[0, 1]) - (c[1, 1] - c[0, 1]) * (c[2, 0] - c[0, 0])
+    return np.sign(n0 * (x0 - c[0, 0]) + n1 * (x1 - c[0, 1]) + n2 * (x2 - c[0, 2]))
+
+
+@njit(cache=True)
+def trilaterate_at(c, r0, r1, r2, branch):
+    """The point (tuple) at distances (r0, r1, r2) from the centres c[0:3] on the `branch` side of their plane:
+    subtracting the sphere equations pairwise gives its coordinates in the centres' plane, the first equation
+    its height. NaN when the spheres do not meet."""
+    ex0, ex1, ex2, d = _unit3(c[1, 0] - c[0, 0], c[1, 1] - c[0, 1], c[1, 2] - c[0, 2])
+    w0, w1, w2 = c[2, 0] - c[0, 0], c[2, 1] - c[0, 1], c[2, 2] - c[0, 2]
+    i = ex0 * w0 + ex1 * w1 + ex2 * w2
+    ey0, ey1, ey2, j = _unit3(w0 - i * ex0, w1 - i * ex1, w2 - i * ex2)
+    ez0, ez1, ez2 = ex1 * ey2 - ex2 * ey1, ex2 * ey0 - ex0 * ey2, ex0 * ey1 - ex1 * ey0
+    x = (r0 * r0 - r1 * r1 + d * d) / (2.0 * d)
+    y = (r0 * r0 - r2 * r2 + i * i + j * j - 2.0 * i * x) / (2.0 * j)
+    z2 = r0 * r0 - x * x - y * y
+    if z2 < 0.0:
+        return np.nan, np.nan, np.nan
+    z = branch * np.sqrt(z2)
+    return (c[0, 0] + x * ex0 + y * ey0 + z * ez0, c[0, 1] + x * ex1 + y * ey1 + z * ez1,
+            c[0, 2] + x * ex2 + y * ey2 + z * ez2)
+
+
+@njit(cache=True)
+def footpad_at(t, Lp, l1, l2):
+    """Forward kinematics (tuple): the footpad for strut lengths (Lp, l1, l2), NaN where none (the spheres do
+    not meet, or a cantilever primary at or above its knee). The joint is the intersection of the spheres about
+    the hardpoints, radii (Lp or a, l1, l2), on the rest branch; the cantilever's footpad is then Lp along the
+    primary through the knee."""
+    cant = t[4, 1] > 0.0
+    a = t[4, 0]
+    j0, j1, j2 = trilaterate_at(t, a if cant else Lp, l1, l2, t[4, 2])
+    if not cant:
+        return j0, j1, j2
+    if not Lp > a:
+        return np.nan, np.nan, np.nan
+    k = Lp / a
+    return t[0, 0] + k * (j0 - t[0, 0]), t[0, 1] + k * (j1 - t[0, 1]), t[0, 2] + k * (j2 - t[0, 2])
 
 
 def junction(leg: TripodLeg, P) -> np.ndarray:
     """Where the secondaries meet the primary for the footpad at P: the footpad itself (inverted tripod) or the
     knee, a = (1 - s) L0 from the hardpoint along the primary (cantilever)."""
-    P = np.asarray(P, float)
-    if not leg.is_cantilever:
-        return P
-    return leg.primary_hardpoint + leg.knee_offset * _unit(P - leg.primary_hardpoint)[0]
+    return np.array(junction_at(leg.packed, *np.asarray(P, float)))
 
 
 def strut_lengths(leg: TripodLeg, P) -> np.ndarray:
     """Inverse kinematics: (Lp, l1, l2) for the footpad at P (m)."""
-    P = np.asarray(P, float)
-    j = junction(leg, P)
-    return np.array([np.linalg.norm(P - leg.primary_hardpoint), *(np.linalg.norm(j - h)
-                                                                   for h in leg.secondary_hardpoints)])
-
-
-def _trilaterate(c: np.ndarray, r: np.ndarray, branch: float) -> np.ndarray:
-    """The point at distances r from the centres c (3, 3) on the `branch` side of their plane: subtracting the
-    sphere equations pairwise gives its coordinates in the centres' plane, the first equation its height."""
-    ex, d = _unit(c[1] - c[0])
-    w = c[2] - c[0]
-    i = ex @ w
-    ey, j = _unit(w - i * ex)
-    ez = np.cross(ex, ey)
-    x = (r[0] ** 2 - r[1] ** 2 + d * d) / (2.0 * d)
-    y = (r[0] ** 2 - r[2] ** 2 + i * i + j * j - 2.0 * i * x) / (2.0 * j)
-    z2 = r[0] ** 2 - x * x - y * y
-    if z2 < 0.0:
-        raise ValueError(f"strut lengths {tuple(r)} m do not meet: no position of the joint")
-    return c[0] + x * ex + y * ey + branch * np.sqrt(z2) * ez
+    return np.array(strut_lengths_at(leg.packed, *np.asarray(P, float)))
 
 
 def footpad_position(leg: TripodLeg, lengths) -> np.ndarray:
-    """Forward kinematics: the footpad for strut lengths (Lp, l1, l2). The joint (footpad or knee) is the
-    intersection of the spheres about the hardpoints, radii (Lp or a, l1, l2), on the rest branch; the
-    cantilever's footpad is then Lp along the primary through the knee."""
+    """Forward kinematics: the footpad for strut lengths (Lp, l1, l2) (footpad_at)."""
     L = np.asarray(lengths, float)
-    a = leg.knee_offset
-    r0 = a if leg.is_cantilever else L[0]
-    j = _trilaterate(leg.hardpoints, np.array([r0, L[1], L[2]]), leg.branch)
-    if not leg.is_cantilever:
-        return j
-    if not L[0] > a:
-        raise ValueError(f"primary length {L[0]:.6g} m: at or above the knee ({a:.6g} m from the hardpoint)")
-    return leg.primary_hardpoint + (L[0] / a) * (j - leg.primary_hardpoint)
+    P = np.array(footpad_at(leg.packed, L[0], L[1], L[2]))
+    if not np.all(np.isfinite(P)):
+        if leg.is_cantilever and not L[0] > leg.knee_offset:
+            raise ValueError(f"primary length {L[0]:.6g} m: at or above the knee ({leg.knee_offset:.6g} m from the "
+                             "hardpoint)")
+        raise ValueError(f"strut lengths {tuple(L)} m do not meet: no position of the joint")
+    return P
 
 
 def length_jacobian(leg: TripodLeg, P) -> np.ndarray:
-    """G = dL/dP (3 x 3) at the footpad P. Inverted tripod: rows are the unit strut vectors u, e1, e2
-    (hardpoint to footpad). Cantilever: dLp/dP = u, dl_i/dP = (a/Lp) (e_i - (e_i . u) u), since the knee moves
-    by (a/Lp) (I - u u^T) dP."""
-    P = np.asarray(P, float)
-    u, Lp = _unit(P - leg.primary_hardpoint)
-    j = junction(leg, P)
-    e = [_unit(j - h)[0] for h in leg.secondary_hardpoints]
-    if not leg.is_cantilever:
-        return np.array([u, *e])
-    k = leg.knee_offset / Lp
-    return np.array([u, *(k * (ei - (ei @ u) * u) for ei in e)])
+    """G = dL/dP (3 x 3) at the footpad P (length_jacobian_at)."""
+    return np.array(length_jacobian_at(leg.packed, *np.asarray(P, float))).reshape(3, 3)
 
 
 def footpad_jacobian(leg: TripodLeg, lengths) -> np.ndarray:
@@ -283,13 +387,13 @@ def tripod_from_params(footpad_radius: float, hardpoint_radius: float, hardpoint
                        secondary_spread: float, primary: CellModel, secondary_compression: CellModel,
                        secondary_tension: CellModel, footpad_diameter: float, primary_angle: float | None = None,
                        footpad_height: float | None = None, secondary_attach: float = 0.0,
-                       secondary_height: float | None = None, azimuth: float = 0.0,
-                       footpad_mass: float = 0.0) -> TripodLeg:
+                       secondary_height: float | None = None, secondary_radius: float | None = None,
+                       azimuth: float = 0.0, footpad_mass: float = 0.0) -> TripodLeg:
     """A leg in the half-plane at `azimuth` (rad, from principal axis 1 toward 2): primary hardpoint at
     `hardpoint_radius` from the capsule axis and `hardpoint_height` along it (m), footpad at `footpad_radius`
     and either `footpad_height` or the primary's angle from the capsule axis `primary_angle` (rad, outward,
-    in (0, pi/2)); secondary hardpoints on the hardpoint circle at azimuth +-`secondary_spread` (rad, in (0, pi))
-    about the leg's, at `secondary_height` (the primary hardpoint's if None); both secondaries get the same
+    in (0, pi/2)); secondary hardpoints at azimuth +-`secondary_spread` (rad, in (0, pi)) about the leg's, at
+    `secondary_radius` and `secondary_height` (the primary hardpoint's if None); both secondaries get the same
     cells."""
     if not footpad_radius > 0:
         raise ValueError(f"footpad_radius: expected > 0 m, got {footpad_radius!r}")
@@ -311,12 +415,87 @@ def tripod_from_params(footpad_radius: float, hardpoint_radius: float, hardpoint
     if not 0 < secondary_spread < np.pi:
         raise ValueError(f"secondary_spread: expected in (0, pi) rad, got {secondary_spread!r}")
     zs = hardpoint_height if secondary_height is None else secondary_height
+    rs = hardpoint_radius if secondary_radius is None else secondary_radius
+    if not rs > 0:
+        raise ValueError(f"secondary_radius: expected > 0 m, got {rs!r}")
 
     def on_circle(radius, angle, height):
         return np.array([radius * np.cos(angle), radius * np.sin(angle), height])
 
     return TripodLeg(on_circle(hardpoint_radius, azimuth, hardpoint_height),
-                     np.array([on_circle(hardpoint_radius, azimuth + sign * secondary_spread, zs) for sign in (1, -1)]),
+                     np.array([on_circle(rs, azimuth + sign * secondary_spread, zs) for sign in (1, -1)]),
                      on_circle(footpad_radius, azimuth, footpad_height), secondary_attach, primary,
                      (secondary_compression, secondary_compression), (secondary_tension, secondary_tension),
                      footpad_diameter, footpad_mass)
+
+
+@njit(cache=True)
+def leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
+    """Forces of tripod leg i (packed as geo[10][i]) with its footpad held at P (terrain axes) under a capsule
+    at r, attitude R (principal -> terrain), velocity v (terrain), rate w (principal); `shape` is unused. Writes
+    the five cell deflections (`cell_deflections`), forces and rates and the force X = G^T T on the capsule
+    (principal axes), T = (-f0, f2 - f1, f4 - f3); returns (cells' power, Lp, l1, l2): the strut lengths are the
+    leg's shape."""
+    t = geo[10][i]
+    b0, b1, b2 = mtv(R, P[0] - r[0], P[1] - r[1], P[2] - r[2])     # CG -> footpad, principal axes
+    c0, c1, c2 = cross(w[0], w[1], w[2], b0, b1, b2)
+    s0, s1, s2 = mtv(R, v[0], v[1], v[2])
+    e0, e1, e2 = -c0 - s0, -c1 - s1, -c2 - s2                       # its rate with the footpad held
+    Lp, l1, l2 = strut_lengths_at(t, b0, b1, b2)
+    g = length_jacobian_at(t, b0, b1, b2)
+    dp = g[0] * e0 + g[1] * e1 + g[2] * e2                          # dL/dt = G (footpad rate)
+    d1 = g[3] * e0 + g[4] * e1 + g[5] * e2
+    d2 = g[6] * e0 + g[7] * e1 + g[8] * e2
+    x0, x1, x2 = t[3, 0] - Lp, t[3, 1] - l1, t[3, 2] - l2
+    defl[0], defl[1], defl[2], defl[3], defl[4] = x0, x1, -x1, x2, -x2
+    rte[0], rte[1], rte[2], rte[3], rte[4] = -dp, -d1, d1, -d2, d2
+    power = 0.0
+    for j in range(5):
+        frc[j] = cell_force(cells, i, j, mem, defl[j], rte[j])
+        power += frc[j] * rte[j]
+    tp, t1, t2 = -frc[0], frc[2] - frc[1], frc[4] - frc[3]
+    X[0] = g[0] * tp + g[3] * t1 + g[6] * t2
+    X[1] = g[1] * tp + g[4] * t1 + g[7] * t2
+    X[2] = g[2] * tp + g[5] * t1 + g[8] * t2
+    return power, Lp, l1, l2
+
+
+@njit(cache=True)
+def free_footpad(geo, cells, i, mem, shape, r, R):
+    """Terrain position (tuple) of the footpad of tripod leg i whose struts have the lengths `shape` (cells and
+    mem unused: the telescoping leg's interface)."""
+    f0, f1, f2 = footpad_at(geo[10][i], shape[0], shape[1], shape[2])
+    x0, x1, x2 = mv(R, f0, f1, f2)
+    return r[0] + x0, r[1] + x1, r[2] + x2
+
+
+@njit(cache=True)
+def lift_shape(geo, cells, i, mem, alpha, beta, psi, main, r, R):
+    """Stored free geometry of a tripod leg lifting off: the strut lengths (Lp, l1, l2) leg_force returned as its
+    (alpha, beta, psi) (main, r, R unused: the other kinds' interface)."""
+    return alpha, beta, psi
+
+
+@njit(cache=True)
+def slack(geo, cells, i, mem, defl, X, P, R):
+    """The ground's normal push on tripod leg i's footpad over its primary's unloading rate (m): the leg lifts off
+    where it falls through zero, the footpad pulled off the terrain (the surface's normal under P, terrain.relief;
+    X the force on the capsule, principal axes)."""
+    f0, f1, f2 = mv(R, X[0], X[1], X[2])
+    _, n0, n1, n2 = relief(geo[9], P[0], P[1])
+    return (f0 * n0 + f1 * n1 + f2 * n2) / cells[3][i, 0]
+
+
+@njit(cache=True)
+def fold(geo, i, P, r, R):
+    """|u . (e1 x e2)| at tripod leg i's joint with its footpad at P (terrain axes): below MIN_DET the struts
+    fold flat (no stiffness across their plane; the trilateration's branch could flip)."""
+    b0, b1, b2 = mtv(R, P[0] - r[0], P[1] - r[1], P[2] - r[2])
+    return abs(fold_at(geo[10][i], b0, b1, b2))
+
+
+def strut_axial_forces(forces: np.ndarray) -> np.ndarray:
+    """Strut axial forces (N, tension positive; primary, secondary 1, secondary 2) from the five cell forces in
+    `TripodLeg.cells` order (last axis): T = (-f0, f2 - f1, f4 - f3)."""
+    f = np.asarray(forces, float)
+    return np.stack((-f[..., 0], f[..., 2] - f[..., 1], f[..., 4] - f[..., 3]), axis=-1)

@@ -61,6 +61,8 @@ def outcome(cfg: SceneConfig, res: Result) -> tuple[str, str]:
         return "body_contact", "the body came within the clearance of the terrain"
     if st == "member_strike":
         return "body_contact", f"the intermediate member of leg {res.struck + 1} struck the terrain"
+    if st == "folded_flat":
+        return "failed", f"leg {res.struck + 1} folded flat: its struts met coplanar at the footpad or knee"
     if st == "failed":
         return "failed", "the step size collapsed or the state became non-finite"
     speed = terrain_speed(res.t, res.y)
@@ -160,6 +162,9 @@ def history_frame(cfg: SceneConfig, res: Result) -> pd.DataFrame:
         f_leg = res.leg_force[:, i] @ leg.to_body          # principal -> leg axes
         for k, ax in enumerate("123"):
             cols[f"{p}force{ax}_N"] = f_leg[:, k]
+        if res.struts is not None and not np.isnan(res.struts[:, i]).all():     # a tripod leg
+            for k, strut in enumerate(("primary", "secondary1", "secondary2")):
+                cols[f"{p}{strut}_axial_N"] = res.struts[:, i, k]
     cols["leg_work_J"] = res.y[:, 13]
     cols["kinetic_J"], cols["potential_J"] = energies(cfg, res)
     df = pd.DataFrame(cols)

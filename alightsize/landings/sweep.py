@@ -27,7 +27,7 @@ from alightsize.landings.run_store import RunStore
 from alightsize.landings.study import Run, Study, agrees, outcome_class, parameter_columns, scene_hash
 
 # (scene config, landing result) -> member-load extremes along the history, stored as JSON with each run
-MemberLoads = Callable[[object, object], list]
+MemberLoads = Callable[[object, object], dict]     # (scene config, result) -> {column stem: JSON-able}
 
 
 @dataclass(frozen=True)
@@ -43,10 +43,11 @@ class SweepStats:
 
 def task_of(study: Study, run: Run, out: Path, member_loads: MemberLoads | None = None) -> dict:
     """What a worker needs for one run (picklable, no open handles); with `member_loads` (a module-level
-    function or a partial of one) the run also stores the member-load extremes it gives for the history."""
+    function or a partial of one) the run also stores the loads it gives for the history, each under its key +
+    "_json" (`alightsize.loads.interface.landing_loads`: member_loads_json, interface_loads_json)."""
     history = str(out / "history" / f"{run.run_id}.parquet") if study.history else None
     return {"run_id": run.run_id, "scene_key": run.scene_key, "scene": run.scene, "overrides": run.overrides,
-            "scene_hash": scene_hash(run) + ("" if member_loads is None else "+loads"), "params": run.params,
+            "scene_hash": scene_hash(run) + ("" if member_loads is None else "+loads+interface"), "params": run.params,
             "reference": run.reference, "criteria": study.criteria, "history": history,
             "member_loads": member_loads}
 
@@ -108,7 +109,7 @@ def execute(task: dict) -> dict:
         row["outcome_class"] = outcome_class(cfg, res)
         row.update(_judged(row, task))
         if task["member_loads"] is not None:
-            row["member_loads_json"] = json.dumps(task["member_loads"](cfg, res))
+            row.update({f"{k}_json": json.dumps(v) for k, v in task["member_loads"](cfg, res).items()})
         if task["history"]:
             frame = history_frame(cfg, res)
             write_atomic(task["history"], lambda p: frame.to_parquet(p, index=False))
@@ -238,8 +239,8 @@ def run_sweep(study: Study, out: Path, backend: str = "pool", workers: int | Non
               scheduler: str | None = None, quiet: bool = False,
               on_row: Callable[[dict], None] | None = None, member_loads: MemberLoads | None = None) -> SweepStats:
     """Run every run of the study not already done into out/runs.sqlite; return the counts. With
-    `member_loads` each run also stores its member-load extremes (`member_loads_json`, e.g.
-    alightsize.loads.histories.dynamic_envelope with the leg's truss angles)."""
+    `member_loads` each run also stores its load extremes (`member_loads_json` and `interface_loads_json` of
+    alightsize.loads.interface.landing_loads)."""
     tasks = [task_of(study, r, out, member_loads) for r in study.runs]
     meta = {"study": study.name, "title": study.title, "seed": study.seed, "study_file": str(study.path)}
     return run_tasks(tasks, out, backend, workers, scheduler, quiet, on_row, meta)

@@ -24,13 +24,15 @@ the simulated ground force at every step.
 
 Telescoping legs: the App. III free-body forces (AF1, P1-P4) at every step from the history's axial cell
 force and ground force (`telescoping_member_histories`), beside the single quasi-static worst case of
-alightsize.loads.telescoping.
+alightsize.loads.telescoping. Tripod legs: the strut forces and the cantilever primary's bending moment at
+every step from the footpad's position and force (`tripod_member_histories`).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
 from math import degrees
+from typing import Sequence
 
 import numpy as np
 
@@ -38,10 +40,11 @@ from alightsize_sim.articulated_cells import return_spring_force
 from alightsize_sim.articulated_leg import ArticulatedLeg
 from alightsize_sim.articulated_statics import MEMBERS, Reactions, TrussAngles, ground_force, member_loads, reactions
 from alightsize_sim.landing import Result, Scene
-from alightsize_sim.legs import initial_shape, leg_force, lift_shape, pack
+from alightsize_sim.legs import initial_shape, leg_force, lift_shape, pack, with_terrain
 from alightsize_sim.rigid_body import quat_matrix
 from alightsize_sim.terrain import pack as pack_terrain
 from alightsize_sim.telescoping_leg import TelescopingLeg as SimTelescopingLeg
+from alightsize_sim.tripod_leg import TripodLeg, strut_forces
 
 from alightsize.loads.quasi_static import TELESCOPING_FORCES
 from alightsize.loads.telescoping import TelescopingLeg as TelescopingFreeBody, sliding_loads
@@ -55,7 +58,7 @@ def leg_shapes(scene: Scene, res: Result) -> np.ndarray:
     (alpha, beta, psi), telescoping (alpha, beta, 0), rad. ValueError if the recovered shape does not reproduce
     the recorded deflections (to SHAPE_TOL)."""
     geo, cells = pack(scene.legs)
-    geo = (*geo, pack_terrain(scene.terrain))          # as the landing's: a free leg's shape looks at the terrain
+    geo = with_terrain(geo, pack_terrain(scene.terrain))   # as the landing's: a free leg's shape looks at the terrain
     n_cell = cells[2].shape[1]
     mem = np.zeros((n_cell, 2))
     defl, frc, rte, X = np.zeros(n_cell), np.zeros(n_cell), np.zeros(n_cell), np.zeros(3)
@@ -153,7 +156,11 @@ def dynamic_envelope(cfg: SceneConfig, res: Result, truss: TrussAngles) -> list[
     """Per member the largest tension (> 0) and compression (< 0) over the history with where they occur:
     {member, tension_N, tension_at: {t_s, leg (1..), alpha_deg, beta_deg, psi_deg}, compression_N,
     compression_at}, None where the member never sees that sense. Ties go to the earliest step, then leg."""
-    hist = leg_histories(cfg.scene, res)
+    return articulated_envelope(leg_histories(cfg.scene, res), res, truss)
+
+
+def articulated_envelope(hist: tuple[LegHistory, ...], res: Result, truss: TrussAngles) -> list[dict]:
+    """`dynamic_envelope` of the leg histories `hist` of `res`."""
     by_leg = {h.leg: h for h in hist}
 
     def where(k: int, i: int) -> dict:
@@ -200,3 +207,42 @@ def telescoping_dynamic_envelope(cfg: SceneConfig, res: Result, leg: Telescoping
         a, b, _ = shapes[k, i]
         return {"t_s": float(res.t[k]), "leg": i + 1, "alpha_deg": degrees(a), "beta_deg": degrees(b), "psi_deg": 0.0}
     return _extremes(telescoping_member_histories(cfg, res, leg), where)
+
+
+TRIPOD_FORCES = ("primary", "secondary1", "secondary2", "primary_upper")     # N, tension positive
+
+
+@dataclass(frozen=True)
+class TripodHistory:
+    """Strut loads of tripod legs along a history, NaN off the ground. `forces`: name -> (n_steps, n_legs) N,
+    tension positive: the primary's cartridge (the primary below the knee), each secondary, the primary between
+    its hardpoint and the knee; `knee_moment` (n_steps, n_legs) N m: the cantilever primary's bending moment at
+    the knee, the largest along it (0 for an inverted tripod); `hardpoints` (n_steps, n_legs, 3, 3) N: the leg's
+    force on the body at its primary, secondary 1 and secondary 2 hardpoints, body principal axes."""
+
+    forces: dict[str, np.ndarray]
+    knee_moment: np.ndarray
+    hardpoints: np.ndarray
+
+
+def tripod_member_histories(res: Result, legs: Sequence[TripodLeg]) -> TripodHistory:
+    """Strut loads of the tripod legs `legs` (alightsize_sim.tripod_leg.TripodLeg, one per leg of the history) at
+    every step on the ground, from the history's footpad positions (terrain axes, taken into body principal
+    axes about the centre of gravity) and the force each leg carries (`leg_force`, principal axes): the struts
+    are massless, so the leg is statically determinate (`strut_forces`: the method of joints for the inverted
+    tripod, moments about the primary's pin for the cantilever; Hibbeler, Statics, sec. 6.5)."""
+    if len(legs) != res.contact.shape[1]:
+        raise ValueError(f"tripod member loads: {len(legs)} legs given for a history of {res.contact.shape[1]}")
+    shape = res.contact.shape
+    forces = {m: np.full(shape, np.nan) for m in TRIPOD_FORCES}
+    moment, hard = np.full(shape, np.nan), np.full(shape + (3, 3), np.nan)
+    for i, leg in enumerate(legs):
+        k = np.flatnonzero(res.contact[:, i])
+        R = np.array([quat_matrix(q / np.linalg.norm(q)) for q in res.y[k, 6:10]]).reshape(len(k), 3, 3)
+        P = np.einsum("kji,kj->ki", R, res.footpad[k, i] - res.y[k, 0:3])
+        for j, step in enumerate(k):
+            s = strut_forces(leg, res.leg_force[step, i], P[j])
+            for m, v in zip(TRIPOD_FORCES, (s.primary, *s.secondaries, s.primary_upper)):
+                forces[m][step, i] = v
+            moment[step, i], hard[step, i] = s.knee_moment, s.hardpoint_forces
+    return TripodHistory(forces, moment, hard)

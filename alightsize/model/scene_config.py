@@ -19,11 +19,12 @@ from pydantic import PlainValidator, ValidationInfo, field_validator, model_vali
 from pydantic_core import PydanticCustomError
 
 from alightsize_sim.crush_cell import CellModel
-from alightsize_sim.landing import G0, Controls, Scene
+from alightsize_sim.landing import G0, HELD_FRICTION, Controls, Scene
 from alightsize_sim.landing_kernel import GRAZE_SPEED
 from alightsize_sim.rigid_body import matrix_quat
 from alightsize_sim.articulated_leg import ArticulatedLeg
 from alightsize_sim.telescoping_leg import TelescopingLeg
+from alightsize_sim.tripod_leg import TripodLeg, tripod_from_params
 from alightsize_sim.terrain import Box, HeightField, Hemisphere, Step, Terrain
 
 from alightsize.common.config import Node, _describe, is_file, load_toml
@@ -376,10 +377,64 @@ class OutputTable(Table):
         return self
 
 
+TRIPOD_COUNT = (3, 8)       # legs of a tripod gear
+
+
+class TripodLegs(Legs):
+    """Tripod legs (inverted tripod or cantilever): the primary hardpoint at radius and height, the footpad at rest
+    at footpad_radius and footpad_height, the secondary hardpoints at secondary_radius and secondary_height,
+    +-secondary_half_angle about the leg's azimuth (geometric axes); the secondaries meet the primary at the
+    footpad (secondary_attach 0) or secondary_attach up it from the footpad (a cantilever)."""
+
+    kind: Literal["tripod"]
+    count: Annotated[int, Integer(*TRIPOD_COUNT)] = 4
+    azimuths: Annotated[tuple[float, ...], Quantities("angle", minimum=TRIPOD_COUNT[0])] | None = None
+    footpad_radius: Length
+    footpad_height: LengthSigned
+    secondary_radius: Length
+    secondary_height: LengthSigned
+    secondary_half_angle: Angle
+    secondary_attach: Annotated[float, Quantity("length", "nonnegative")] = 0.0
+    primary: str
+    secondary_compression: str
+    secondary_tension: str
+
+    @model_validator(mode="before")
+    @classmethod
+    def _count(cls, data: Any) -> Any:
+        """Without a count, the legs are as many as their azimuths."""
+        if isinstance(data, dict) and isinstance(data.get("azimuths"), list) and "count" not in data:
+            return {**data, "count": len(data["azimuths"])}
+        return data
+
+    @model_validator(mode="after")
+    def _shape(self):
+        if self.azimuths is not None and self.count != len(self.azimuths):
+            raise refuse(f"as many legs as azimuths ({len(self.azimuths)}; give one of count and azimuths)",
+                         f"count = {self.count}", "count")
+        if self.azimuths is not None and len(self.azimuths) > TRIPOD_COUNT[1]:
+            raise refuse(f"{TRIPOD_COUNT[0]} to {TRIPOD_COUNT[1]} angles", f"{len(self.azimuths)}", "azimuths")
+        if not 0 < self.secondary_half_angle < np.pi:
+            raise refuse("an angle between 0 and 180 deg", f"{np.degrees(self.secondary_half_angle):.4g} deg",
+                         "secondary_half_angle")
+        if not self.footpad_height < self.height:
+            raise refuse(f"a height below the primary hardpoint's ({self.height:.4g} m)",
+                         f"{self.footpad_height:.4g} m", "footpad_height")
+        if not self.footpad_diameter > 0:
+            raise refuse("the footpads' diameter (> 0)", "none given", "footpad_diameter")
+        return self._check(5, "primary, then each secondary's compression and tension")
+
+    def attachments(self) -> list[tuple[float, np.ndarray]]:
+        if self.azimuths is None:
+            return super().attachments()
+        return [(az, np.array([self.radius * np.cos(az), self.radius * np.sin(az), self.height]))
+                for az in self.azimuths]
+
+
 if TYPE_CHECKING:        # as Rock
-    AnyLegs = TelescopingLegs | ArticulatedLegs
+    AnyLegs = TelescopingLegs | ArticulatedLegs | TripodLegs
 else:
-    AnyLegs = Tagged("kind", "telescoping", TelescopingLegs, ArticulatedLegs)
+    AnyLegs = Tagged("kind", "telescoping", TelescopingLegs, ArticulatedLegs, TripodLegs)
 
 
 class SceneFile(Table):
@@ -398,6 +453,7 @@ class SceneFile(Table):
     def _references(self):
         legs = self.legs
         names = ("upper", "lower") if isinstance(legs, ArticulatedLegs) else \
+            ("primary", "secondary_compression", "secondary_tension") if isinstance(legs, TripodLegs) else \
             ("axial", "pads") if legs.pad_angles else ("axial",)
         for key in names:
             name = getattr(legs, key)
@@ -406,6 +462,11 @@ class SceneFile(Table):
             if name not in self.cells:
                 raise refuse("the name of a [cells.NAME] table (" + ", ".join(sorted(self.cells)) + ")",
                              repr(name), "legs." + key)
+        slips = min(self.terrain.mu_static, self.terrain.mu_dynamic) < HELD_FRICTION or self.terrain.soil is not None
+        if isinstance(legs, TripodLegs) and slips and not legs.footpad_mass > 0:
+            raise refuse("footpads with mass for tripod legs on ground they can slip on (their massless slide does "
+                         "not converge with the tolerance: docs/simulator.md#tripod-legs)", "0 (massless footpads)",
+                         "legs.footpad_mass")
         if self.terrain.soil is not None:
             if not legs.footpad_mass > 0:
                 raise refuse("footpads with mass to sink into it ([legs] footpad_mass > 0)", "massless footpads",
@@ -491,7 +552,7 @@ def build_scene(path: Path, f: SceneFile) -> SceneConfig:
     if not np.all(moments > 0):
         raise InputError(file, "capsule.inertia", "a positive definite tensor", f"principal moments {moments}")
     cg = np.array(cap.cg)
-    legs, names = _legs(f.legs, f.cells, to_geo, cg)
+    legs, names = _legs(f.legs, f.cells, to_geo, cg, file)
     ter = f.terrain
     features = Terrain(
         tuple(Step(s.x, s.y, float(np.degrees(s.direction)), s.height) for s in ter.steps),
@@ -536,11 +597,54 @@ def build_scene(path: Path, f: SceneFile) -> SceneConfig:
                        tuple(names))
 
 
-def _legs(legs: TelescopingLegs | ArticulatedLegs, cells: dict[str, Cell], to_geo: np.ndarray,
-          cg: np.ndarray) -> tuple[list[TelescopingLeg | ArticulatedLeg], list[tuple[str, ...]]]:
+TRIPOD_CELLS = ("primary", "secondary1_compression", "secondary1_tension", "secondary2_compression",
+                "secondary2_tension")
+
+
+def _tripods(legs: TripodLegs, cells: dict[str, Cell], to_geo: np.ndarray, cg: np.ndarray,
+             file: str) -> list[TripodLeg]:
+    """Tripod legs from their parametric form (geometric axes), turned into principal axes from the CG."""
+    out = []
+    for (az, _), f in zip(legs.attachments(), legs.factors(5)):
+        try:
+            root = tripod_from_params(legs.footpad_radius, legs.radius, legs.height,
+                                      secondary_spread=legs.secondary_half_angle,
+                                      primary=cells[legs.primary].model(f[0]),
+                                      secondary_compression=cells[legs.secondary_compression].model(),
+                                      secondary_tension=cells[legs.secondary_tension].model(),
+                                      footpad_diameter=legs.footpad_diameter, footpad_height=legs.footpad_height,
+                                      secondary_radius=legs.secondary_radius,
+                                      secondary_height=legs.secondary_height, azimuth=az)
+            fraction = legs.secondary_attach / root.rest_primary_length
+            if not fraction < 1.0:
+                raise ValueError(f"secondary_attach: expected a length up the primary shorter than it "
+                                 f"({root.rest_primary_length:.4g} m), got {legs.secondary_attach:.4g} m")
+            comp, tens = cells[legs.secondary_compression], cells[legs.secondary_tension]
+            leg = TripodLeg(to_geo.T @ (root.primary_hardpoint - cg), (root.secondary_hardpoints - cg) @ to_geo,
+                            to_geo.T @ (root.footpad - cg), fraction, root.primary,
+                            (comp.model(f[1]), comp.model(f[3])), (tens.model(f[2]), tens.model(f[4])),
+                            legs.footpad_diameter, legs.footpad_mass)
+        except ValueError as exc:
+            key, _, why = str(exc).partition(": ")
+            raise InputError(file, f"legs.{_TRIPOD_KEYS.get(key, key)}", "a tripod leg that can stand", why) from None
+        out.append(leg)
+    return out
+
+
+# tripod_leg's names for what the scene file calls otherwise
+_TRIPOD_KEYS = {"primary_hardpoint": "radius", "hardpoint_radius": "radius", "footpad": "footpad_height",
+                "secondary_hardpoints": "secondary_half_angle", "secondary_spread": "secondary_half_angle",
+                "primary": "secondary_attach"}
+
+
+def _legs(legs: TelescopingLegs | ArticulatedLegs | TripodLegs, cells: dict[str, Cell], to_geo: np.ndarray,
+          cg: np.ndarray, file: str) -> tuple[list[TelescopingLeg | ArticulatedLeg | TripodLeg], list[tuple[str, ...]]]:
     """The simulator's legs (in principal axes, from the CG) and the names of each leg's cells."""
-    out: list[TelescopingLeg | ArticulatedLeg] = []
+    out: list[TelescopingLeg | ArticulatedLeg | TripodLeg] = []
     names: list[tuple[str, ...]] = []
+    if isinstance(legs, TripodLegs):
+        tripods = _tripods(legs, cells, to_geo, cg, file)
+        return list(tripods), [TRIPOD_CELLS] * len(tripods)
     if isinstance(legs, ArticulatedLegs):
         geometry = legs.geometry.geometry(legs.length_scale)       # test-model scaling (Table 27)
         for (az, attach), f in zip(legs.attachments(), legs.factors(2)):

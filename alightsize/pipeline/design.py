@@ -145,7 +145,8 @@ class DesignResult:
     def to_pandas(self) -> dict[str, pd.DataFrame]:
         """The result as tables, SI with the unit in each column name: "checks" (one row per check, with f,
         MS and verdict; None where f is infinite), "weights" (per item), with landing cases "landings" (one row per
-        landing as stored) and with sized items "sizing" (one row per sized item)."""
+        landing as stored) and "interface_loads" (each body hardpoint's largest force, `Landings.interface_loads`)
+        and with sized items "sizing" (one row per sized item)."""
         checks = pd.DataFrame([r.as_json() for r in self.records], columns=CHECK_COLUMNS)
         weights = pd.DataFrame([{"item": w.label, "count_per_leg": w.count, "weight_each_kg": w.each,
                                  "weight_per_leg_kg": w.count * w.each} for w in self.weights],
@@ -153,6 +154,7 @@ class DesignResult:
         out = {"checks": checks, "weights": weights}
         if self.config.landings is not None:
             out["landings"] = pd.DataFrame(self.config.landings.rows)
+            out["interface_loads"] = self.config.landings.interface_loads
         if self.sizings:
             out["sizing"] = pd.DataFrame([{"item": s.item, "dimension": s.dimension, "printed_m": s.printed,
                                            "sized_m": s.sized, "design_factor_printed": _finite(s.factor_printed),

@@ -17,14 +17,18 @@ from __future__ import annotations
 
 import itertools
 from dataclasses import dataclass
-from functools import partial
 from math import degrees, radians
 from pathlib import Path
 from typing import Annotated, Any
 
+import numpy as np
 from pydantic import ValidationInfo, model_validator
 
+from alightsize_sim.articulated_kinematics import footpad as articulated_footpad
+from alightsize_sim.articulated_leg import ArticulatedLeg
 from alightsize_sim.landing import G0
+from alightsize_sim.rigid_body import quat_matrix
+from alightsize_sim.telescoping_leg import TelescopingLeg as SimTelescopingLeg
 from alightsize_sim.crush_curve import CrushCurve
 
 from alightsize.common.config import SEED_MAX, Node, load_toml
@@ -35,15 +39,16 @@ from alightsize.landings.dispersions import Dispersion
 from alightsize.landings.study import Run, Study, _sampled
 from alightsize.loads.config import Combined, Configuration, GridTable, LoadsConfig, Name, check_combined
 from alightsize.loads.envelopes import LegCase, default_grid
-from alightsize.loads.histories import dynamic_envelope, telescoping_dynamic_envelope
+from alightsize.loads.interface import landing_loads
 from alightsize.loads.quasi_static import TELESCOPING, validate_references
 from alightsize.loads.telescoping import TelescopingLeg
 from alightsize.model.envelope import Envelope
 from alightsize.model.materials import library, material_paths
 from alightsize.model.gravity import Gravity
 from alightsize.model.legs import TrussTable
-from alightsize.model.scene_config import (Cell, SceneConfig, SceneDocument, SceneFile, TelescopingLegs,
-                                           build_scene, lander_scene)
+from alightsize.model.scene_config import (ArticulatedLegs, Cell, SceneConfig, SceneDocument, SceneFile,
+                                           TelescopingLegs, TripodLegs, build_scene, lander_scene, read_scene)
+from alightsize.model.soils import find_soil
 from alightsize.pipeline.cores import core_prism, crush_stroke
 from alightsize.pipeline.config import DesignSpec, UnitSystem, read_design, read_items
 from alightsize.pipeline.landings import LandingSpec
@@ -65,14 +70,26 @@ class MonteCarlo(Table):
     note: str = ""
 
 
+class TerrainRequirement(Table):
+    """`[requirements.terrain]`: ground beyond the envelope's plane the lander must land on. Each key given adds
+    the envelope's corners of largest descent speed again on that ground (`terrain_cases`)."""
+
+    rock_height: Annotated[float, Quantity("length")] | None = None     # a hemispherical rock under a footpad
+    hole_depth: Annotated[float, Quantity("length")] | None = None      # a footpad into a hole
+    soil: str | None = None                                             # a soil preset or file
+    note: str = ""
+
+
 class Requirements(RequiredFactor):
-    """`[requirements]`: the design factor members must reach, the landing criteria and the impact envelope."""
+    """`[requirements]`: the design factor members must reach, the landing criteria, the impact envelope and the
+    terrain."""
 
     decimals: Annotated[int, Integer(0, 12)] | None = None
     weight_goal: Annotated[float, Number()] | None = None
     criteria: CriteriaTable = CriteriaTable()
     envelope: Envelope
     monte_carlo: MonteCarlo = MonteCarlo()
+    terrain: TerrainRequirement = TerrainRequirement()
     note: str = ""
 
     @model_validator(mode="after")
@@ -167,6 +184,8 @@ def landing_cases(scene: SceneDocument, name: str, req: Requirements, legs: int,
     width = len(str(len(combos)))
     points = [(f"corner-{n + 1:0{width}d}", "lander", {**fixed, **dict(zip(axes, c))}, dict(zip(axes, c)), None)
               for n, c in enumerate(combos)]
+    fastest = axes["initial.velocity[2]"][-1]                                 # the largest descent speed
+    points += terrain_cases(scene, req.terrain, [p for p in points if p[2]["initial.velocity[2]"] == fastest])
     disp = [Dispersion("initial.velocity[2]", "uniform", (-e.vertical_speed[1], -e.vertical_speed[0]), "m/s", False),
             Dispersion("initial.velocity[1]", "uniform", e.horizontal_speed, "m/s", False),
             Dispersion("initial.heading", "uniform", tuple(map(degrees, e.heading)), "deg", False),
@@ -186,6 +205,54 @@ def landing_cases(scene: SceneDocument, name: str, req: Requirements, legs: int,
     return Study(scene.path, name, title,
                  tuple(runs), req.criteria.criteria(), tuple(k for k in axes if k != "initial.velocity[2]"),
                  "initial.velocity[2]", False, mc.seed, plot)
+
+
+def rest_footpad(leg: SimTelescopingLeg | ArticulatedLeg) -> np.ndarray:
+    """A leg's footpad at rest (hanging straight; the parallelogram at its initial psi, the peg leg straight down),
+    m in principal axes from the centre of gravity."""
+    if isinstance(leg, ArticulatedLeg):
+        s = np.array(articulated_footpad(leg.geometry, 0.0, 0.0, leg.psi0), float)
+    elif isinstance(leg, SimTelescopingLeg):
+        s = np.array([0.0, 0.0, -leg.rho])
+    else:
+        raise ValueError(f"no rest footpad for a leg of kind {type(leg).__name__}")
+    return leg.attach + leg.to_body @ s
+
+
+def terrain_cases(scene: SceneDocument, terrain: TerrainRequirement, corners: list[tuple]) -> list[tuple]:
+    """The landing cases of `[requirements.terrain]`: each of `corners` (run id, scene key, overrides, parameters,
+    reference) again with, for each key given, a hemispherical rock of radius `rock_height` centred under leg 1's
+    footpad ("corner-rock-NN"); leg 1's footpad over a hole `hole_depth` deep, a down-step whose edge runs across
+    leg 1's azimuth midway between its footpad and the nearest other footpad's reach along it ("corner-hole-NN");
+    the terrain's soil set to `soil` ("corner-soil-NN"). Footpads are placed as the simulator starts a landing:
+    the centre of gravity over the terrain origin, the scene's initial attitude (roll, inclination, slope), legs
+    at rest. Rocks and steps the scene already has are kept."""
+    ter = scene.data.get("terrain", {})
+    out = []
+    for rid, skey, over, params, ref in corners:
+        n = rid.removeprefix("corner-")
+        cfg = read_scene(scene, over)
+        R = quat_matrix(cfg.scene.q0)
+        feet = np.array([(R @ rest_footpad(leg))[:2] for leg in cfg.scene.legs])
+        extra: list[tuple[str, str, object]] = []
+        if terrain.rock_height is not None:
+            x, y = feet[0]
+            rock = {"shape": "hemisphere", "x": _q(x, "m"), "y": _q(y, "m"), "radius": _q(terrain.rock_height, "m"),
+                    "note": "under leg 1 ([requirements.terrain] rock_height)"}
+            extra.append(("rock", "terrain.rocks", [*ter.get("rocks", []), rock]))
+        if terrain.hole_depth is not None:
+            e = feet[0] / np.linalg.norm(feet[0])
+            edge = 0.5 * (feet[0] @ e + np.max(feet[1:] @ e)) * e                 # a file has 2 legs or more
+            step = {"x": _q(edge[0], "m"), "y": _q(edge[1], "m"),
+                    "direction": _q(degrees(np.arctan2(-e[0], e[1])), "deg"),     # leg 1 on its left
+                    "height": _q(-terrain.hole_depth, "m"),
+                    "note": "leg 1 into a hole ([requirements.terrain] hole_depth)"}
+            extra.append(("hole", "terrain.steps", [*ter.get("steps", []), step]))
+        if terrain.soil is not None:
+            extra.append(("soil", "terrain.soil", terrain.soil))
+        out += [(f"corner-{kind}-{n}", skey, {**over, key: value}, {**params, key: value}, ref)
+                for kind, key, value in extra]
+    return out
 
 
 def _crush(curve) -> float:
@@ -240,12 +307,19 @@ def _loads_config(path: Path, name: str, structure: dict, scene: SceneFile, legs
                   units: str) -> tuple[LoadsConfig, tuple[str, ...]]:
     """The App. III loads config of the lander's own legs and cells (and the envelopes its members use)."""
     file = str(path)
+    if isinstance(scene.legs, TripodLegs):
+        raise InputError(file, "legs.kind", "telescoping or articulated legs to design (the members of tripod legs "
+                         "are not derived yet: `alightsize simulate` and `sweep` run a tripod lander's landings)",
+                         "tripod")
     if isinstance(scene.legs, TelescopingLegs):
         s = validate(TelescopingStructure, structure, file, "structure")
         leg = legs[0]
         if not leg.pads:
             raise InputError(file, "legs.pad_angles", "rotational pads on the telescoping leg (App. III free body)",
                              "none")
+        if not leg.pad_lever > 0:
+            raise InputError(file, "legs.pad_lever", "a pad lever above 0 (the pads react the leg's moment about "
+                             "its pivot: App. III free body)", "0 m")
         tele = TelescopingLeg(_crush(leg.axial.curve), _crush(leg.pads[0].curve), leg.pad_lever, leg.rho,
                               s.bearing_length, s.friction)
         return LoadsConfig(path, f"{name} telescoping leg (App. III free body)", units, default_grid(), (), (), tele), \
@@ -276,6 +350,7 @@ def _outrigger(path: Path, name: str, structure: dict, scene: SceneFile, loads: 
         assert loads.telescoping is not None          # a telescoping lander's loads are its App. III free body
         return None if span is None else telescoping_outrigger(span, loads.telescoping)
     own = scene.legs
+    assert isinstance(own, ArticulatedLegs)           # `_loads_config` refuses tripod legs first
     s = validate(ArticulatedStructure, structure, file, "structure", psi_initial=own.psi_initial, name=name)
     return articulated_outrigger(Node(file, "structure", structure), own.geometry.geometry(own.length_scale),
                                  own.radius, s.body_radius, envelope)
@@ -347,9 +422,14 @@ def read_lander(path: str | Path, overrides: dict | None = None, root: Node | No
     validate_references(root, loads)
     read_items(tuple(nodes), mats, req.required, root, rules)
     root.finish()
+    if req.terrain.soil is not None:
+        find_soil(req.terrain.soil, path.parent, str(path), "requirements.terrain.soil")
+        if not (scene_file.legs.footpad_mass > 0 and scene_file.legs.footpad_diameter > 0):
+            raise InputError(str(path), "requirements.terrain.soil", "footpads that sink into it ([legs] "
+                             "footpad_mass and footpad_diameter)", "massless footpads or no footpad_diameter")
     study = landing_cases(document, name, req, len(scene.scene.legs), scene_over)
-    member_loads = (partial(telescoping_dynamic_envelope, leg=loads.telescoping) if loads.telescoping
-                    else partial(dynamic_envelope, truss=loads.cases[0].truss))
+    member_loads = landing_loads(truss=None if loads.telescoping else loads.cases[0].truss,
+                                 telescoping=loads.telescoping)
     landings = LandingSpec(study, envelopes, "criteria", member_loads)
     spec = DesignSpec(path, name, title, scene.scene.mass, len(scene.scene.legs), units, req.required, req.decimals,
                       mats, tuple(nodes), loads, landings, req.weight_goal, rules)

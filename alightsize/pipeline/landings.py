@@ -16,7 +16,6 @@ from __future__ import annotations
 
 import dataclasses
 from collections import Counter
-from functools import partial
 import json
 import tempfile
 from dataclasses import dataclass
@@ -25,11 +24,13 @@ from math import degrees, radians
 from pathlib import Path
 from typing import Callable, Literal
 
+import pandas as pd
+
 from alightsize.common.config import is_file
 from alightsize.common.typed import Table
 from alightsize.common.errors import InputError
 from alightsize.loads.config import LoadsConfig
-from alightsize.loads.histories import dynamic_envelope
+from alightsize.loads.interface import landing_loads
 from alightsize.loads.envelopes import Extreme
 from alightsize.landings.criteria import Closest, LandingLimits, closest, violation_kinds
 from alightsize.loads.quasi_static import TELESCOPING, TELESCOPING_FORCES, LoadsResult, pick
@@ -40,6 +41,7 @@ from alightsize.landings.study import Study, read_study
 from alightsize.landings.sweep import run_sweep
 
 LANDING = "landing "        # prefix of the `configuration` of an extreme that a landing set
+INTERFACE_COLUMNS = ["leg", "hardpoint", "force_N", "force_1_N", "force_2_N", "force_3_N", "t_s", "run_id"]
 Role = Literal["criteria", "load_cases"]
 
 
@@ -81,6 +83,25 @@ class Landings:
     def ok(self) -> bool:
         """Whether the landings let the design pass: always as load cases, else when every one meets them."""
         return self.role == "load_cases" or not self.failing
+
+    @cached_property
+    def interface_loads(self) -> pd.DataFrame:
+        """Each body hardpoint's largest force over every landing (the interface loads; docs/contracts.md): one row
+        per leg and hardpoint (INTERFACE_COLUMNS), the force's magnitude and its components along the body's
+        geometric axes at that instant, the time into the landing and the landing; ties go to the earlier
+        landing."""
+        best: dict[tuple[int, str], dict] = {}
+        order: dict[str, int] = {}                        # hardpoints in the order the leg kind lists them
+        for r in self.rows:
+            for d in json.loads(r.get("interface_loads_json") or "[]"):
+                key = (d["leg"], d["hardpoint"])
+                order.setdefault(d["hardpoint"], len(order))
+                if key not in best or d["force_N"] > best[key]["force_N"]:
+                    best[key] = {"leg": d["leg"], "hardpoint": d["hardpoint"], "force_N": d["force_N"],
+                                 **{f"force_{i + 1}_N": c for i, c in enumerate(d["components_N"])},
+                                 "t_s": d["t_s"], "run_id": r["run_id"]}
+        keys = sorted(best, key=lambda k: (k[0], order[k[1]]))
+        return pd.DataFrame([best[k] for k in keys], columns=INTERFACE_COLUMNS)
 
     def criteria_counts(self) -> str:
         """"a cell bottomed 8, XDD(1) > 1000 g/s 24": how many landings violate each kind of criterion."""
@@ -176,7 +197,8 @@ def merge(loads: LoadsResult, rows: tuple[dict, ...], names: tuple[str, ...]) ->
 @dataclass(frozen=True)
 class LandingSpec:
     """Landing cases as read: the study, the envelopes their member loads extend and the role they play.
-    `member_loads` (scene config, result) -> member extremes; None: dynamic_envelope with the loads' truss."""
+    `member_loads` (scene config, result) -> {"member_loads": member extremes, "interface_loads": hardpoint
+    extremes} (alightsize.loads.interface.landing_loads)."""
 
     study: Study
     envelopes: tuple[str, ...]
@@ -212,7 +234,7 @@ def landing_spec(t: LandingsTable, design: Path, loads: LoadsConfig | None) -> L
     if t.role == "criteria" and study.criteria is None:
         raise InputError(file, "landings.role", f"role = \"load_cases\", or [criteria] in {path.name} for the "
                          "landings to meet", "role = \"criteria\" (the default) and a study without [criteria]")
-    return LandingSpec(study, tuple(t.envelopes), t.role, partial(dynamic_envelope, truss=loads.cases[0].truss))
+    return LandingSpec(study, tuple(t.envelopes), t.role, landing_loads(truss=loads.cases[0].truss))
 
 
 def run_landings(spec: LandingSpec, loads: LoadsResult, out: Path | None,

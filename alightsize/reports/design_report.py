@@ -97,6 +97,7 @@ def context(res) -> dict:
                "saved": fmt(s.weight_printed - s.weight_sized, "mass", system)
                if s.weight_printed and s.weight_sized else ""} for s in res.sizings]
     return {"loads": _loads_context(res, system), "references": _references(cfg, system),
+            "interface": _interface(res, system),
             "verdict": res.verdict(), "checks_ok": res.checks_ok, "landings": _landings(cfg, system),
             "headlines": res.headlines(system), "closest_head": CLOSEST_HEAD,
             "closest": [{"line": c.line(), "failed": c.margin.failed, "anchor": _anchor(c.run_id) if c.run_id else None}
@@ -185,6 +186,18 @@ def _landings(cfg, system: str) -> dict | None:
             "outcomes": ", ".join(f"{k} {n}" for k, n in Counter(r["outcome"] for r in land.rows).most_common())}
 
 
+def _interface(res: DesignResult, system: str) -> list[dict]:
+    """The interface loads (the "interface_loads" table): each body hardpoint's largest force, its components along
+    the body's geometric axes and the landing that produced it."""
+    tables = res.to_pandas()
+    if "interface_loads" not in tables:
+        return []
+    return [{"leg": r.leg, "hardpoint": r.hardpoint, "force": fmt(r.force_N, "force", system),
+             "components": " / ".join(fmt(getattr(r, f"force_{i}_N"), "force", system) for i in (1, 2, 3)),
+             "t": f"{r.t_s:.3f} s", "landing": r.run_id, "anchor": _anchor(r.run_id)}
+            for r in tables["interface_loads"].itertuples()]
+
+
 def _loads_context(res: DesignResult, system: str) -> dict | None:
     cfg = res.config
     if cfg.loads is None:
@@ -245,6 +258,7 @@ def write_workbook(res, path: Path) -> None:
         frame_sheet(wb, "Sizing", sizing_frame(res, system))
     if res.config.landings is not None:
         frame_sheet(wb, "Landings", landings_frame(res.config.landings.cases(), system))
+        frame_sheet(wb, "Interface loads", interface_frame(res, system))
     save_workbook(wb, path)
 
 
@@ -316,6 +330,16 @@ def landings_frame(rows: list[dict], system: str) -> pd.DataFrame:
         **{f"Peak XDD({k + 1}) (g)": [r["peak"]["xdd_g"][k] for r in rows] for k in range(3)}})
 
 
+def interface_frame(res: DesignResult, system: str) -> pd.DataFrame:
+    """One row per leg and body hardpoint (the "interface_loads" table): its largest force and the components, in
+    the display unit, with the landing and the time into it."""
+    t, fu = res.to_pandas()["interface_loads"], unit_label("force", system)
+    force = lambda col: [to_display(v, "force", system) for v in t[col]]    # noqa: E731
+    return pd.DataFrame({"Leg": t["leg"], "Hardpoint": t["hardpoint"], f"Force ({fu})": force("force_N"),
+                         **{f"Component {i} ({fu})": force(f"force_{i}_N") for i in (1, 2, 3)},
+                         "Landing": t["run_id"], "Time (s)": t["t_s"]})
+
+
 def _png(fig, path: Path) -> None:
     save_png(fig, path, 90)
 
@@ -344,6 +368,7 @@ def summary_json(res: DesignResult) -> dict:
     if cfg.landings is not None:
         out["landings"] = cfg.landings.cases()
         out["landing_margins"] = [c.as_json() for c in cfg.landings.closest]
+        out["interface_loads"] = json_records(tables["interface_loads"])
     if "sizing" in tables:
         out["sizing"] = json_records(tables["sizing"])
     return out

@@ -133,6 +133,24 @@ def test_landing_member_loads_reach_the_checks(lunar):
     assert lunar.config.loads.telescoping["AF1"] == pytest.approx(max(8000.0, peak), rel=1e-12)
 
 
+def test_interface_loads_are_each_hardpoints_largest_over_the_landings(lunar):
+    """The design's interface loads: one row per leg and hardpoint (pivot, pads of four legs), each the largest
+    force any landing stored for it, named by that landing, its magnitude the norm of its components (1e-12
+    relative: the same float64 numbers), and summary.json carries the same table."""
+    table = lunar.to_pandas()["interface_loads"]
+    assert list(zip(table.leg, table.hardpoint)) == [(i, h) for i in (1, 2, 3, 4) for h in ("pivot", "pads")]
+    stored = {}
+    for r in lunar.config.landings.rows:
+        for d in json.loads(r["interface_loads_json"]):
+            key = (d["leg"], d["hardpoint"])
+            stored[key] = max(stored.get(key, (0.0, "")), (d["force_N"], r["run_id"]), key=lambda v: v[0])
+    for row in table.itertuples():
+        assert (row.force_N, row.run_id) == stored[(row.leg, row.hardpoint)]
+        assert row.force_N == pytest.approx(np.linalg.norm([row.force_1_N, row.force_2_N, row.force_3_N]), rel=1e-12)
+    from alightsize.reports.design_report import summary_json
+    assert summary_json(lunar)["interface_loads"] == table.to_dict("records")
+
+
 def test_crushing_force_change_reaches_landings_envelopes_and_checks(tmp_path):
     """One edit of the axial cell's crushing force changes the landings, the App. III envelope and the checks
     in a single run."""
