@@ -5,7 +5,7 @@ members' checks, the landing cases of the requirements). Reading it only reads a
 [lander]        name, title, gravity ("earth" | "moon" | "mars" | an acceleration), rules, materials
 [capsule] [cells.NAME] [legs] [terrain] [controls] [initial]     as in a scene (docs/reference/scene.md)
 [structure]     telescoping: bearing_length, friction, body_radius (outrigger); articulated: truss, psi_final, grid,
-                configuration, combined
+                configuration, combined, body_radius (outrigger)
 [members.NAME]  material, section, role, size, weight, ... (alightsize.pipeline.members, .outrigger)
 [[item]]        App. IV items with their checks written out (overrides; the 1966 examples)
 [requirements]  required_design_factor (allow_below_one), decimals, weight_goal, criteria, envelope, monte_carlo
@@ -47,8 +47,8 @@ from alightsize.model.envelope import Envelope
 from alightsize.model.materials import library, material_paths
 from alightsize.model.gravity import Gravity
 from alightsize.model.legs import TrussTable
-from alightsize.model.scene_config import (Cell, SceneConfig, SceneDocument, SceneFile, TelescopingLegs, TripodLegs,
-                                           build_scene, lander_scene, read_scene)
+from alightsize.model.scene_config import (ArticulatedLegs, Cell, SceneConfig, SceneDocument, SceneFile,
+                                           TelescopingLegs, TripodLegs, build_scene, lander_scene, read_scene)
 from alightsize.model.soils import find_soil
 from alightsize.pipeline.cores import core_prism, crush_stroke
 from alightsize.pipeline.config import DesignSpec, UnitSystem, read_design, read_items
@@ -56,7 +56,8 @@ from alightsize.pipeline.landings import LandingSpec
 from alightsize.checks.rules import DEFAULT_RULES, RuleSet
 from alightsize.pipeline.items import RequiredFactor
 from alightsize.pipeline.members import member_item
-from alightsize.pipeline.outrigger import OUTRIGGER, outrigger_item, outrigger_span
+from alightsize.pipeline.outrigger import (OUTRIGGER, Outrigger, articulated_outrigger, outrigger_item,
+                                           outrigger_span, telescoping_outrigger)
 
 SCENE_TABLES = ("capsule", "cells", "legs", "terrain", "initial", "controls", "output")
 ALL_CONFIGURATIONS = "all"           # the combined envelope of App. III cell variants when none is named
@@ -286,6 +287,7 @@ class ArticulatedStructure(Table):
     configuration: list[Configuration] = []
     combined: list[Combined] = []
     name: Name | None = None
+    body_radius: Annotated[float, Quantity("length")] | None = None     # outrigger out to the hinges
     note: str = ""
 
     @model_validator(mode="after")
@@ -340,12 +342,21 @@ def _loads_config(path: Path, name: str, structure: dict, scene: SceneFile, legs
     return cfg, (cases[-1].name, *(c[0] for c in combined))
 
 
-def _outrigger_span(path: Path, structure: dict, scene: SceneFile) -> float | None:
-    """The outrigger's length of a telescoping lander with `[structure] body_radius` (None: no outrigger)."""
-    if not isinstance(scene.legs, TelescopingLegs):
-        return None
-    s = validate(TelescopingStructure, structure, str(path), "structure")
-    return outrigger_span(scene.legs.radius, s.body_radius)
+def _outrigger(path: Path, name: str, structure: dict, scene: SceneFile, loads: LoadsConfig,
+               envelope: str) -> Outrigger | None:
+    """The outrigger of a lander with `[structure] body_radius` (None: no body radius or the attachments on it);
+    an articulated leg's is loaded by the ground force of `envelope`."""
+    file = str(path)
+    if isinstance(scene.legs, TelescopingLegs):
+        body = validate(TelescopingStructure, structure, file, "structure").body_radius
+        span = outrigger_span(scene.legs.radius, body)
+        assert loads.telescoping is not None          # a telescoping lander's loads are its App. III free body
+        return None if span is None else telescoping_outrigger(span, loads.telescoping)
+    own = scene.legs
+    assert isinstance(own, ArticulatedLegs)           # `_loads_config` refuses tripod legs first
+    s = validate(ArticulatedStructure, structure, file, "structure", psi_initial=own.psi_initial, name=name)
+    return articulated_outrigger(Node(file, "structure", structure), own.geometry.geometry(own.length_scale),
+                                 own.radius, s.body_radius, envelope)
 
 
 def cell_curve(root: Node, cell: str) -> tuple[tuple[float, ...], tuple[float, ...]]:
@@ -396,15 +407,15 @@ def read_lander(path: str | Path, overrides: dict | None = None, root: Node | No
     loads, envelopes = _loads_config(path, name, lander.structure, scene_file, scene.scene.legs, units)
     mats = library(extra)
     members = root.table("members", optional=True)
-    span = _outrigger_span(path, lander.structure, scene_file)
-    if span is not None and OUTRIGGER not in (members.data if members else {}):
+    rig = _outrigger(path, name, lander.structure, scene_file, loads, envelopes[-1])
+    if rig is not None and OUTRIGGER not in (members.data if members else {}):
         raise root.error(f"members.{OUTRIGGER}", f"the outrigger from the body ([structure] body_radius) to the "
-                         f"legs' attachment, {span:.4g} m out: a member to check and weigh", "none")
+                         f"legs' attachment, {rig.span:.4g} m out: a member to check and weigh", "none")
     nodes = []
     if members:
         for key in members.data:
             m = members.table(key)
-            data = (outrigger_item(m, loads.telescoping, span, rules) if key == OUTRIGGER
+            data = (outrigger_item(m, rig, rules) if key == OUTRIGGER
                     else member_item(m, key, loads.telescoping, envelopes[-1], rules))
             nodes.append(Node(root.file, m.path, data, root.context))
         members.finish()
