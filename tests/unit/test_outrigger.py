@@ -172,9 +172,7 @@ def test_articulated_outrigger_length_weight_and_loads():
     radius 3.0 ft and the inch dimensions are exact in SI to rounding)."""
     spec = _articulated({"body_radius": "2.5 ft"}, {"outrigger": TUBE})
     loads = run_loads(spec.loads)
-    root = load_toml(ARTICULATED)
-    attach(root, loads)
-    items = {i.name: i for i in read_items(spec.items, spec.materials, spec.required, root, spec.rules)}
+    items = {i.name: with_loads(i, loads, str(ARTICULATED))[0] for i in spec.items}
     out = items["outrigger"]
     L = (6 + 5.2912) * IN
     assert out.length == pytest.approx(L, rel=1e-12)
