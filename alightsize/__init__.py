@@ -17,16 +17,12 @@ each column name, as docs/contracts.md names the JSON fields) and `.plot(kind)` 
 
 from __future__ import annotations
 
-from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
+
+from alightsize.common.version import __version__
 
 __all__ = ["__version__", "audit", "design", "loads", "read_design", "read_lander", "simulate", "sweep", "synthesize",
            "write_design"]
-
-try:
-    __version__ = version("alightsize")
-except PackageNotFoundError:                           # run from a source tree without installing
-    __version__ = "0+unknown"
 
 
 def read_lander(path: str | Path):
@@ -48,8 +44,8 @@ def design(config, out: str | Path | None = None, progress: bool = False):
     """Run the design pipeline on a lander (from `read_lander`), a design config or a path to either: App. III
     envelopes, landing cases (stored in `out`/landings, resumable), member loads, checks and sizing, weights,
     verdict; with `out` also write the reports there. Returns a DesignResult (`.ok`, `.verdict()`,
-    `.summary_lines()`, `.to_pandas()`: "checks", "weights", "landings", "sizing"; `.plot()`: "factors",
-    "weights").
+    `.summary_lines()`, `.to_pandas()`: "checks", "weights", "landings", "sizing", "load_references";
+    `.plot()`: "factors", "weights").
 
         res = alightsize.design("examples/affdl-tr-66-33/telescoping.toml")
         res.verdict(), res.to_pandas()["checks"][["item", "design_factor", "ok"]]

@@ -11,7 +11,7 @@ import traceback
 import warnings
 from pathlib import Path
 
-from alightsize import __version__
+from alightsize.common.version import __version__
 from alightsize.common.errors import InputError, InputWarning
 from alightsize.common.compile_notice import compile_notice
 from alightsize.common.lock import output_folder
@@ -39,7 +39,7 @@ def _design(args, stage: Stage) -> int:
 
 def _audit(args) -> int:
     from alightsize.common.atomic import write_atomic
-    from alightsize.checks.audit import audit_table, junit_xml
+    from alightsize.pipeline.audit import audit_table, junit_xml
     from alightsize.pipeline.design import audit, below_one_line
     from alightsize.pipeline.lander import read_input
     from alightsize.reports.design_report import audit_json

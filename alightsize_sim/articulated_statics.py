@@ -167,12 +167,13 @@ class TrussAngles:
     rho: float
 
 
-MEMBERS = ("PL1", "PL2", "PU1", "RA", "RB", "Q1", "Q2", "R1213", "R11", "R123")
+MEMBERS = ("PL1", "PL2", "PU1", "RA", "RB", "Q1", "Q2", "R1213", "R11", "R123", "F")
 
 
 def member_loads(r: Reactions, truss: TrussAngles) -> dict[str, np.ndarray]:
     """Member loads of Tables 14-22 (eq. 101-106; tension positive for PU, PL). PU2, PL3 and PL6 are the
-    mirror images of PU1, PL1 and PL2 (RA, RB reversed) and share their envelopes."""
+    mirror images of PU1, PL1 and PL2 (RA, RB reversed) and share their envelopes. F: the ground force's magnitude
+    |F| at the footpad, the resultant of the leg's attachment forces on the body (its outrigger's load)."""
     st, ct = np.sin(truss.theta), np.cos(truss.theta)
     sg, cg = np.sin(truss.gamma), np.cos(truss.gamma)
     sr, cr = np.sin(truss.rho), np.cos(truss.rho)
@@ -188,4 +189,5 @@ def member_loads(r: Reactions, truss: TrussAngles) -> dict[str, np.ndarray]:
         "R1213": np.hypot(r.R12, r.R13),
         "R11": r.R11,
         "R123": np.sqrt(r.R11 ** 2 + r.R12 ** 2 + r.R13 ** 2),
+        "F": np.sqrt(r.F1 ** 2 + r.F2 ** 2 + r.F3 ** 2),
     }

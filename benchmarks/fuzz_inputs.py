@@ -264,7 +264,7 @@ def read(kind: str, path: Path) -> Any:
 
 
 # Infinities a result may hold by design: a check without stress has design factor and margin inf
-# (checks/audit.py). A study's run overrides and parameters are its values as written, read with the scene.
+# (pipeline/audit.py). A study's run overrides and parameters are its values as written, read with the scene.
 INFINITE_OK = {"factor", "margin"}
 RAW = {"overrides", "params"}
 

@@ -15,7 +15,7 @@ import statistics
 import time
 from pathlib import Path
 
-from alightsize.checks.sizing import size_item
+from alightsize.pipeline.sizing import size_item
 from alightsize.pipeline.config import prepare
 from alightsize.pipeline.items import Item
 from alightsize.pipeline.lander import read_input

@@ -79,8 +79,10 @@ def heatmap_figure(fields: pd.DataFrame, case_name: str, system: str, labels: di
     member and grid point at that psi, load_N NaN where a cell has bottomed), panels in the members' order,
     titled with `labels` (member -> label, default the member)."""
     from alightsize.common.units import to_display, unit_label
-    fig = Figure(figsize=(17, 6.5), layout="constrained")
-    axes = fig.subplots(2, 5, sharex=True, sharey=True)
+    fig = Figure(figsize=(20, 6.5), layout="constrained")
+    axes = fig.subplots(2, 6, sharex=True, sharey=True)
+    for ax in axes.flat[fields["member"].nunique():]:
+        ax.set_axis_off()
     bottomed = False
     for ax, (member, f) in zip(axes.flat, fields.groupby("member", sort=False)):
         a, b = pd.unique(f["alpha_deg"]), pd.unique(f["beta_deg"])

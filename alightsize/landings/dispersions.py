@@ -10,11 +10,14 @@ study draws from `numpy.random.default_rng([seed, k])` in the declared order, so
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any, Literal
 
 import numpy as np
+from pydantic import RootModel
 from scipy.special import ndtr, ndtri
 
 from alightsize.common.config import Node
+from alightsize.common.typed import Table, Tagged, validate
 from alightsize.common.units import registry
 
 DISTRIBUTIONS = {"normal": ("mean", "sd"), "uniform": ("low", "high"),
@@ -54,12 +57,49 @@ class Dispersion:
         return f"{float(x)!r} {self.unit}" if self.unit else float(x)
 
 
-def _number(node: Node, key: str, value, unit: str | None) -> tuple[float, str]:
+class _Spread(Table):
+    per_cell: bool = False
+    note: str = ""
+
+
+class Normal(_Spread):
+    dist: Literal["normal"]
+    mean: Any                   # a number or a quantity, each parameter in the first's unit (`_magnitudes`)
+    sd: Any
+
+
+class Uniform(_Spread):
+    dist: Literal["uniform"]
+    low: Any
+    high: Any
+
+
+class TruncatedNormal(_Spread):
+    dist: Literal["truncated_normal"]
+    mean: Any
+    sd: Any
+    low: Any
+    high: Any
+
+
+class DispersionTable(RootModel):
+    """A `[dispersions]` entry: the table of its `dist`."""
+
+    root: Tagged("dist", None, Normal, Uniform, TruncatedNormal)  # type: ignore[valid-type]
+
+
+def _magnitude(node: Node, key: str, value, unit: str | None) -> tuple[float, str]:
     """A distribution parameter as (magnitude, unit); later parameters are converted to the first's unit."""
     if isinstance(value, (int, float)) and not isinstance(value, bool):
         if unit:
             raise node.error(key, f"a quantity in {unit} like the first parameter", repr(value))
-        return float(value), ""
+        try:
+            mag = float(value)
+        except OverflowError:                          # an integer beyond any float
+            mag = float("inf")
+        if not np.isfinite(mag):
+            raise node.error(key, "a finite value", repr(value))
+        return mag, ""
     try:
         q = registry().Quantity(str(value))
         q = q.to(unit) if unit else q
@@ -73,23 +113,19 @@ def _number(node: Node, key: str, value, unit: str | None) -> tuple[float, str]:
 
 
 def read_dispersion(node: Node, key: str) -> Dispersion:
-    """One `[dispersions]` entry; errors name the key path."""
+    """One `[dispersions]` entry (DispersionTable), its parameters in the first one's unit; errors name the key
+    path."""
     spec = node.table(key)
-    dist = spec.string("dist", choices=tuple(DISTRIBUTIONS))
-    names = DISTRIBUTIONS[dist]
-    spec.allow(("dist", "per_cell", "note") + names)
+    d = validate(DispersionTable, spec.data, spec.file, spec.path).root
     unit, values = None, []
-    for name in names:
-        mag, unit = _number(spec, name, spec.raw(name), unit)
+    for name in DISTRIBUTIONS[d.dist]:
+        mag, unit = _magnitude(spec, name, getattr(d, name), unit)
         values.append(mag)
-    per_cell = spec.boolean("per_cell", False)
-    spec.string("note", "")
-    spec.finish()
-    if dist != "uniform" and values[1] <= 0:
-        raise spec.error("sd", "a positive standard deviation", repr(spec.raw("sd")))
-    lo_hi = values[-2:] if dist != "normal" else None
+    if d.dist != "uniform" and values[1] <= 0:
+        raise spec.error("sd", "a positive standard deviation", repr(d.sd))
+    lo_hi = values[-2:] if d.dist != "normal" else None
     if lo_hi and not lo_hi[0] < lo_hi[1]:
         raise spec.error("high", f"a bound above low ({lo_hi[0]:g})", f"{lo_hi[1]:g}")
-    if per_cell and (key != "legs.cell_factors" or unit):
+    if d.per_cell and (key != "legs.cell_factors" or unit):
         raise spec.error("per_cell", "per_cell only on legs.cell_factors with plain-number factors", "true")
-    return Dispersion(key, dist, tuple(values), unit or "", per_cell)
+    return Dispersion(key, d.dist, tuple(values), unit or "", d.per_cell)

@@ -31,7 +31,7 @@ from pathlib import Path
 
 import numpy as np
 
-from alightsize import __version__
+from alightsize.common.version import __version__
 from alightsize.common.config import SEED_MAX, Node, is_file, load_toml
 from alightsize.landings.dispersions import Dispersion, read_dispersion
 from alightsize.common.errors import InputError, InputWarning

@@ -20,7 +20,7 @@ from alightsize_sim.articulated_statics import MEMBERS, TrussAngles, member_load
 from alightsize_sim.crush_curve import CrushCurve
 
 # Member labels as Tables 14-22 print them (mirror-image members in parentheses).
-MEMBER_LABELS = {"PL1": "PL1, (PL3)", "PL2": "PL2, (PL6)", "PU1": "PU1, (PU2)", "R1213": "R12/13"}
+MEMBER_LABELS = {"PL1": "PL1, (PL3)", "PL2": "PL2, (PL6)", "PU1": "PU1, (PU2)", "R1213": "R12/13", "F": "F (ground)"}
 
 
 @dataclass(frozen=True)

@@ -147,39 +147,55 @@ def _reference(node: Node, name: str, ref: dict, envelopes: tuple[str, ...],
     return sub, env, member, sense, factor
 
 
-def _resolve(res: LoadsResult, node: Node, name: str, ref: dict) -> float:
-    sub, env, member, sense, factor = _reference(node, name, ref, tuple(res.envelopes), res.telescoping is not None)
-    if env == TELESCOPING:
-        assert res.telescoping is not None          # `_reference` refuses it without a [telescoping] table
-        value, extreme = abs(res.telescoping[member]) * factor, (res.telescoping_from or {}).get(member)
+class ForceRef(float):
+    """A force key written as an envelope reference, read and checked against the envelope names: it stands for
+    1 N until `resolve` gives it its envelope's value (reading computes nothing)."""
+
+    key: str                          # the force key as written, `item["Upper Truss"].check[0].load`
+    ref_key: str                      # the reference table's own path (errors on its keys)
+    envelope: str
+    member: str
+    sense: str
+    factor: float
+    optional: bool
+
+    def __new__(cls, key: str, ref_key: str, envelope: str, member: str, sense: str, factor: float,
+                optional: bool) -> "ForceRef":
+        ref = super().__new__(cls, 1.0)
+        ref.key, ref.ref_key, ref.envelope, ref.member, ref.sense = key, ref_key, envelope, member, sense
+        ref.factor, ref.optional = factor, optional
+        return ref
+
+
+def resolve(res: LoadsResult, ref: ForceRef, file: str) -> LoadReference:
+    """The envelope value `ref` stands for (magnitude times factor); `Unloaded` when an optional reference's member
+    is never loaded in its sense."""
+    if ref.envelope == TELESCOPING:
+        assert res.telescoping is not None          # `validate_references` refuses it without a [telescoping] table
+        value, extreme = abs(res.telescoping[ref.member]) * ref.factor, (res.telescoping_from or {}).get(ref.member)
     else:
-        extreme = pick(res, env, member, sense)
-        if extreme is None and ref.get("optional"):
-            raise Unloaded(node.key(name))
+        extreme = pick(res, ref.envelope, ref.member, ref.sense)
+        if extreme is None and ref.optional:
+            raise Unloaded(ref.key)
         if extreme is None:
-            raise sub.error("sense", f"a sense in which {member} is loaded in envelope {env!r}", repr(sense))
-        value = abs(extreme.value) * factor
-    node.context.setdefault("load_references", []).append(
-        LoadReference(node.key(name), env, member, sense, factor, value, extreme))
-    return value
+            raise InputError(file, f"{ref.ref_key}.sense", f"a sense in which {ref.member} is loaded in envelope "
+                             f"{ref.envelope!r}", repr(ref.sense))
+        value = abs(extreme.value) * ref.factor
+    return LoadReference(ref.key, ref.envelope, ref.member, ref.sense, ref.factor, value, extreme)
 
 
 def validate_references(node: Node, cfg: LoadsConfig | None) -> None:
-    """Let force references under `node` be checked against `cfg`'s envelope names before any envelope is
-    computed (each stands for 1 N meanwhile); without a loads config a reference is an input error."""
+    """Let force references under `node` be read as `ForceRef`s, checked against `cfg`'s envelope names before
+    any envelope is computed; without a loads config a reference is an input error."""
     def check(n: Node, name: str, ref: dict) -> float:
         if cfg is None:
             raise n.error(name, "a force with units, or an envelope reference with [loads] file = ... in the "
                           "design config", "an envelope reference but no [loads] file")
-        _reference(n, name, ref, tuple(c.name for c in cfg.cases) + tuple(c[0] for c in cfg.combined),
-                   cfg.telescoping is not None)
-        return 1.0
+        sub, env, member, sense, factor = _reference(
+            n, name, ref, tuple(c.name for c in cfg.cases) + tuple(c[0] for c in cfg.combined),
+            cfg.telescoping is not None)
+        return ForceRef(n.key(name), sub.path, env, member, sense, factor, ref.get("optional", False))
     node.context["force_reference"] = check
-
-
-def attach(node: Node, res: LoadsResult) -> None:
-    """Let every force key under `node` be a table {envelope, member, sense, factor} resolved from `res`."""
-    node.context["force_reference"] = lambda n, name, ref: _resolve(res, n, name, ref)
 
 
 def load_from(path) -> LoadsResult:

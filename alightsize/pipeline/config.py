@@ -3,7 +3,6 @@ and the prepared design (`DesignConfig`: envelopes computed, landings run, every
 
 from __future__ import annotations
 
-import copy
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Annotated, Callable, Literal
@@ -13,9 +12,9 @@ from alightsize.common.errors import InputError
 from alightsize.common.typed import Integer, Quantity, Table, validate
 from alightsize.checks.rules import DEFAULT_RULES, RULES, RuleSet
 from alightsize.loads.config import LoadsConfig, read_loads
-from alightsize.loads.quasi_static import LoadReference, LoadsResult, attach, run_loads, validate_references
+from alightsize.loads.quasi_static import LoadReference, LoadsResult, run_loads, validate_references
 from alightsize.model.materials import Material, library, material_paths
-from alightsize.pipeline.items import Item, RequiredFactor, read_item
+from alightsize.pipeline.items import Item, RequiredFactor, read_item, with_loads
 from alightsize.pipeline.landings import Landings, LandingSpec, LandingsTable, landed, landing_spec, run_landings
 
 UnitSystem = Literal["US", "SI"]
@@ -23,8 +22,8 @@ UnitSystem = Literal["US", "SI"]
 
 @dataclass(frozen=True)
 class DesignSpec:
-    """A design as read: the items as TOML tables (their loads may reference envelopes not yet computed),
-    the quasi-static loads to compute and the landing cases to run."""
+    """A design as read: the items (their loads may reference envelopes not yet computed: `ForceRef`), the
+    quasi-static loads to compute and the landing cases to run."""
 
     path: Path
     configuration: str
@@ -35,14 +34,14 @@ class DesignSpec:
     required: float
     decimals: int | None
     materials: dict[str, Material]
-    items: tuple[Node, ...]
+    items: tuple[Item, ...]
     loads: LoadsConfig | None = None
     landings: LandingSpec | None = None
     weight_goal: float | None = None          # leg-system weight as a fraction of the capsule
     rules: str = DEFAULT_RULES                # the checks' formulas where a check names none (checks.rules)
-    # items whose loads the landings give (a tripod leg's members): stored landing rows -> the item tables that
-    # replace `items` (which hold them under stand-in loads, to be validated when read)
-    landing_items: Callable[[tuple[dict, ...]], tuple[Node, ...]] | None = None
+    # items whose loads the landings give (a tripod leg's members): stored landing rows -> the items that
+    # replace `items` (which hold them under stand-in loads, validated when read)
+    landing_items: Callable[[tuple[dict, ...]], tuple[Item, ...]] | None = None
 
 
 @dataclass(frozen=True)
@@ -66,9 +65,9 @@ class DesignConfig:
 
 def read_items(nodes: tuple[Node, ...], mats: dict[str, Material], required: float, root: Node,
                rules: str) -> tuple[Item, ...]:
-    """Read item tables (copies: a node can be read again once loads are known); names unique."""
-    items = tuple(read_item(Node(n.file, n.path, copy.deepcopy(n.data), root.context), mats, required, RULES[rules])
-                  for n in nodes)
+    """Read item tables (their envelope references checked against `root`'s loads config: validate_references);
+    names unique."""
+    items = tuple(read_item(n, mats, required, RULES[rules]) for n in nodes)
     names = [i.name for i in items]
     dup = next((n for n in names if names.count(n) > 1), None)
     if dup:
@@ -127,33 +126,28 @@ def read_design(path: str | Path, root: Node | None = None) -> DesignSpec:
     landings = landing_spec(f.landings, path, loads) if f.landings is not None else None
     for t in ("design", "report", "audit", "loads", "landings"):
         root.raw(t, None)                          # read above
-    nodes = tuple(root.tables("item", label="name"))
-    read_items(nodes, mats, required, root, d.rules)
+    items = read_items(tuple(root.tables("item", label="name")), mats, required, root, d.rules)
     root.finish()
     return DesignSpec(path, d.configuration, d.title if d.title is not None else d.configuration, d.capsule_mass,
-                      d.legs, f.report.units, required, aud.decimals, mats, nodes, loads, landings, rules=d.rules)
+                      d.legs, f.report.units, required, aud.decimals, mats, items, loads, landings, rules=d.rules)
 
 
 def prepare(spec: DesignSpec, landings_dir: Path | None = None, progress: bool = False,
             rows: tuple[dict, ...] | None = None) -> DesignConfig:
     """Compute the quasi-static envelopes, run the landing cases (into `landings_dir`, resumable; a temporary
     folder when None; or take their stored `rows`, one per run in study order), merge their member loads and
-    resolve every check's load."""
+    resolve every check's load (`with_loads`)."""
     loads = run_loads(spec.loads) if spec.loads is not None else None
     landings = None
-    nodes = spec.items
+    items = spec.items
     if spec.landings is not None:
         loads, landings = (landed(spec.landings, loads, rows) if rows is not None
                            else run_landings(spec.landings, loads, landings_dir, progress))
         if spec.landing_items is not None:
-            nodes = spec.landing_items(landings.rows)
-    root = Node(spec.path, "", {})
-    if loads is not None:
-        attach(root, loads)
-    else:
-        validate_references(root, None)
-    items = read_items(nodes, spec.materials, spec.required, root, spec.rules)
+            items = spec.landing_items(landings.rows)
+    resolved = [with_loads(item, loads, str(spec.path)) for item in items]
+    items = tuple(item for item, _ in resolved)
+    refs = tuple(r for _, item_refs in resolved for r in item_refs)
     return DesignConfig(spec.path, spec.configuration, spec.title, spec.capsule_mass, spec.legs, spec.units,
-                        spec.required, spec.decimals, items, loads, tuple(root.context.get("load_references", ())),
-                        landings, spec.weight_goal)
+                        spec.required, spec.decimals, items, loads, refs, landings, spec.weight_goal)
 

@@ -4,17 +4,21 @@ from __future__ import annotations
 
 from collections import Counter
 from dataclasses import dataclass
+from functools import cached_property
 from math import isfinite
 
 import pandas as pd
 
-from alightsize.checks.audit import CheckRecord, run_audit
-from alightsize.checks.sizing import Sizing, size_item
+from alightsize.pipeline.audit import CheckRecord, run_audit
+from alightsize.pipeline.sizing import Sizing, size_item
 from alightsize.common.units import fmt
 from alightsize.landings.criteria import violation_kinds
 from alightsize.pipeline.config import DesignConfig, DesignSpec, prepare
 from alightsize.pipeline.items import Item
+from alightsize.pipeline.landings import LANDING
 
+REFERENCE_COLUMNS = ["load_key", "item", "kind", "key", "envelope", "member", "sense", "factor", "value_N", "at_rad",
+                     "configuration", "quasi_static_N", "governs"]
 CHECK_COLUMNS = ["configuration", "item", "check", "kind", "load_N", "stress_Pa", "allowable_Pa", "design_factor",
                  "required_design_factor", "margin_of_safety", "ok", "ok_as_stated"]     # CheckRecord.as_json
 
@@ -145,8 +149,14 @@ class DesignResult:
     def to_pandas(self) -> dict[str, pd.DataFrame]:
         """The result as tables, SI with the unit in each column name: "checks" (one row per check, with f,
         MS and verdict; None where f is infinite), "weights" (per item), with landing cases "landings" (one row per
-        landing as stored) and "interface_loads" (each body hardpoint's largest force, `Landings.interface_loads`)
-        and with sized items "sizing" (one row per sized item)."""
+        landing as stored) and "interface_loads" (each body hardpoint's largest force), with sized items "sizing"
+        (one row per sized item) and with envelope loads "load_references" (one row per check load taken from an
+        envelope). Copies: the result keeps its own."""
+        return {name: frame.copy() for name, frame in self.tables.items()}
+
+    @cached_property
+    def tables(self) -> dict[str, pd.DataFrame]:
+        """The tables of `to_pandas`, built once; the reports render from them (never modified)."""
         checks = pd.DataFrame([r.as_json() for r in self.records], columns=CHECK_COLUMNS)
         weights = pd.DataFrame([{"item": w.label, "count_per_leg": w.count, "weight_each_kg": w.each,
                                  "weight_per_leg_kg": w.count * w.each} for w in self.weights],
@@ -161,13 +171,33 @@ class DesignResult:
                                            "design_factor_sized": _finite(s.factor_sized),
                                            "weight_printed_kg": s.weight_printed, "weight_sized_kg": s.weight_sized,
                                            "feasible": s.feasible, "at_bound": s.at_bound} for s in self.sizings])
+        if self.config.load_refs:
+            out["load_references"] = pd.DataFrame([self._reference_row(r) for r in self.config.load_refs],
+                                                  columns=REFERENCE_COLUMNS)
         return out
+
+    def _reference_row(self, r) -> dict:
+        """A check's envelope load: the check it loads, where the envelope peaked and, with landing cases, the
+        quasi-static load it had before they joined and which of the two governs."""
+        cfg = self.config
+        check = next(((i, c) for i in cfg.items for c in i.checks if r.key.startswith(c.where + ".")), None)
+        row = {"load_key": r.key, "item": check[0].name if check else None, "kind": check[1].kind if check else None,
+               "key": r.key[len(check[1].where) + 1:] if check else None, "envelope": r.envelope,
+               "member": r.member, "sense": r.sense, "factor": r.factor, "value_N": r.value,
+               "at_rad": tuple(r.extreme.at) if r.extreme else None,
+               "configuration": r.extreme.configuration if r.extreme else None, "quasi_static_N": None,
+               "governs": None}
+        if cfg.landings is not None and r.extreme is not None and r.envelope in cfg.landings.envelopes:
+            qs = cfg.landings.quasi_static_load(r.envelope, r.member, r.sense)
+            row["quasi_static_N"] = qs * r.factor if qs is not None else None
+            row["governs"] = "landing" if r.extreme.configuration.startswith(LANDING) else "quasi-static"
+        return row
 
     def plot(self, kind: str = "factors"):
         """A matplotlib Figure: "factors" (each item's governing design factor against the requirement) or
         "weights" (the weight breakdown per leg), drawn from `to_pandas()`."""
         from alightsize.common import figures
-        tables, name = self.to_pandas(), self.config.configuration
+        tables, name = self.tables, self.config.configuration
         draw = figures.pick({"factors": lambda: figures.design_factor_figure(tables["checks"], name),
                              "weights": lambda: figures.weight_figure(tables["weights"], name, self.config.units)},
                             kind)
@@ -196,7 +226,7 @@ def run_design(cfg: DesignConfig | DesignSpec, landings_dir=None, progress: bool
     sizings, judged = [], []
     for item in cfg.items:
         if size and item.size is not None:
-            assert item.section is not None          # `_read_size` refuses a size without a section
+            assert item.section is not None          # `_size_spec` refuses a size without a section
             s = size_item(item)
             sizings.append(s)
             item = item.with_section(item.section.with_dim(s.dimension, s.sized))

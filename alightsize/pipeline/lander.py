@@ -5,7 +5,7 @@ members' checks, the landing cases of the requirements). Reading it only reads a
 [lander]        name, title, gravity ("earth" | "moon" | "mars" | an acceleration), rules, materials
 [capsule] [cells.NAME] [legs] [terrain] [controls] [initial]     as in a scene (docs/reference/scene.md)
 [structure]     telescoping: bearing_length, friction, body_radius (outrigger); articulated: truss, psi_final, grid,
-                configuration, combined; tripod: none
+                configuration, combined, body_radius (outrigger); tripod: none
 [members.NAME]  material, section, role, size, weight, ... (alightsize.pipeline.members, .outrigger; tripod legs:
                 .tripod_members, loaded by the landings' strut-load extremes)
 [[item]]        App. IV items with their checks written out (overrides; the 1966 examples)
@@ -50,16 +50,17 @@ from alightsize.model.envelope import Envelope
 from alightsize.model.materials import library, material_paths
 from alightsize.model.gravity import Gravity
 from alightsize.model.legs import TrussTable
-from alightsize.model.scene_config import (Cell, SceneConfig, SceneDocument, SceneFile, TelescopingLegs, TripodLegs,
-                                           build_scene, lander_scene, read_scene)
+from alightsize.model.scene_config import (ArticulatedLegs, Cell, SceneConfig, SceneDocument, SceneFile,
+                                           TelescopingLegs, TripodLegs, build_scene, lander_scene, read_scene)
 from alightsize.model.soils import find_soil
 from alightsize.pipeline.cores import core_prism, crush_stroke
 from alightsize.pipeline.config import DesignSpec, UnitSystem, read_design, read_items
 from alightsize.pipeline.landings import LandingSpec
 from alightsize.checks.rules import DEFAULT_RULES, RuleSet
-from alightsize.pipeline.items import RequiredFactor
+from alightsize.pipeline.items import Item, RequiredFactor
 from alightsize.pipeline.members import member_item
-from alightsize.pipeline.outrigger import OUTRIGGER, outrigger_item, outrigger_span
+from alightsize.pipeline.outrigger import (OUTRIGGER, Outrigger, articulated_outrigger, outrigger_item,
+                                           outrigger_span, telescoping_outrigger)
 from alightsize.pipeline.tripod_members import TripodLoads, landing_tripod_items, tripod_items
 
 SCENE_TABLES = ("capsule", "cells", "legs", "terrain", "initial", "controls", "output")
@@ -222,9 +223,9 @@ def landing_cases(scene: SceneDocument, name: str, req: Requirements, legs: int,
 
 def rest_footpad(leg: SimTelescopingLeg | ArticulatedLeg | TripodLeg) -> np.ndarray:
     """A leg's footpad at rest (hanging straight; the parallelogram at its initial psi, the peg leg straight down;
-    a tripod's as its geometry places it), m in principal axes from the centre of gravity."""
+    a tripod's as given), m in principal axes from the centre of gravity."""
     if isinstance(leg, TripodLeg):
-        return leg.footpad
+        return np.asarray(leg.footpad, float)
     if isinstance(leg, ArticulatedLeg):
         s = np.array(articulated_footpad(leg.geometry, 0.0, 0.0, leg.psi0), float)
     elif isinstance(leg, SimTelescopingLeg):
@@ -299,6 +300,7 @@ class ArticulatedStructure(Table):
     configuration: list[Configuration] = []
     combined: list[Combined] = []
     name: Name | None = None
+    body_radius: Annotated[float, Quantity("length")] | None = None     # outrigger out to the hinges
     note: str = ""
 
     @model_validator(mode="after")
@@ -356,12 +358,21 @@ def _loads_config(path: Path, name: str, structure: dict, scene: SceneFile, legs
     return cfg, (cases[-1].name, *(c[0] for c in combined))
 
 
-def _outrigger_span(path: Path, structure: dict, scene: SceneFile) -> float | None:
-    """The outrigger's length of a telescoping lander with `[structure] body_radius` (None: no outrigger)."""
-    if not isinstance(scene.legs, TelescopingLegs):
-        return None
-    s = validate(TelescopingStructure, structure, str(path), "structure")
-    return outrigger_span(scene.legs.radius, s.body_radius)
+def _outrigger(path: Path, name: str, structure: dict, scene: SceneFile, loads: LoadsConfig,
+               envelope: str) -> Outrigger | None:
+    """The outrigger of a lander with `[structure] body_radius` (None: no body radius or the attachments on it);
+    an articulated leg's is loaded by the ground force of `envelope`."""
+    file = str(path)
+    if isinstance(scene.legs, TelescopingLegs):
+        body = validate(TelescopingStructure, structure, file, "structure").body_radius
+        span = outrigger_span(scene.legs.radius, body)
+        assert loads.telescoping is not None          # a telescoping lander's loads are its App. III free body
+        return None if span is None else telescoping_outrigger(span, loads.telescoping)
+    own = scene.legs
+    assert isinstance(own, ArticulatedLegs)           # tripod legs have no outrigger (read_lander)
+    s = validate(ArticulatedStructure, structure, file, "structure", psi_initial=own.psi_initial, name=name)
+    return articulated_outrigger(Node(file, "structure", structure), own.geometry.geometry(own.length_scale),
+                                 own.radius, s.body_radius, envelope)
 
 
 def cell_curve(root: Node, cell: str) -> tuple[tuple[float, ...], tuple[float, ...]]:
@@ -389,6 +400,14 @@ def _crushable(node: Node, root: Node, scene: SceneFile, mats: dict) -> Node:
     return Node(node.file, node.path, {**node.data, "weight": prism}, root.context)
 
 
+def _tripod_landing_items(leg: TripodLeg, members: Node, rules: str, mats: dict, required: float,
+                          others: tuple[Item, ...], rows: tuple[dict, ...]) -> tuple[Item, ...]:
+    """A tripod lander's items under the strut-load extremes of its landing `rows`: its members
+    (`landing_tripod_items`), then its [[item]]s `others` as read."""
+    nodes = landing_tripod_items(leg, members, rules, mats, rows)
+    return (*read_items(tuple(nodes), mats, required, members, rules), *others)
+
+
 def read_lander(path: str | Path, overrides: dict | None = None, root: Node | None = None) -> Lander:
     """Read and validate a lander file (or its TOML `root`, already loaded), with `overrides` (dotted key path ->
     TOML value, e.g. {"legs.radius": "2 m"}) applied first; any problem is an InputError naming file, key path,
@@ -412,10 +431,10 @@ def read_lander(path: str | Path, overrides: dict | None = None, root: Node | No
     loads, envelopes = _loads_config(path, name, lander.structure, scene_file, scene.scene.legs, units)
     mats = library(extra)
     members = root.table("members", optional=True)
-    span = _outrigger_span(path, lander.structure, scene_file)
-    if span is not None and OUTRIGGER not in (members.data if members else {}):
+    rig = _outrigger(path, name, lander.structure, scene_file, loads, envelopes[-1]) if loads is not None else None
+    if rig is not None and OUTRIGGER not in (members.data if members else {}):
         raise root.error(f"members.{OUTRIGGER}", f"the outrigger from the body ([structure] body_radius) to the "
-                         f"legs' attachment, {span:.4g} m out: a member to check and weigh", "none")
+                         f"legs' attachment, {rig.span:.4g} m out: a member to check and weigh", "none")
     nodes: list[Node] = []
     tripod: tuple[TripodLeg, Node] | None = None
     leg = scene.scene.legs[0]
@@ -426,16 +445,16 @@ def read_lander(path: str | Path, overrides: dict | None = None, root: Node | No
         assert loads is not None                    # telescoping and articulated legs have their App. III config
         for key in members.data:
             m = members.table(key)
-            data = (outrigger_item(m, loads.telescoping, span, rules) if key == OUTRIGGER
+            data = (outrigger_item(m, rig, rules) if key == OUTRIGGER
                     else member_item(m, key, loads.telescoping, envelopes[-1], rules))
             nodes.append(Node(root.file, m.path, data, root.context))
         members.finish()
-    others = [_crushable(n, root, scene_file, mats) for n in root.tables("item", optional=True, label="name")]
-    nodes += others
+    n_members = len(nodes)
+    nodes += [_crushable(n, root, scene_file, mats) for n in root.tables("item", optional=True, label="name")]
     if not nodes:
         raise root.error("members", "at least one [members.NAME] table or [[item]]", "neither")
     validate_references(root, loads)
-    read_items(tuple(nodes), mats, req.required, root, rules)
+    items = read_items(tuple(nodes), mats, req.required, root, rules)
     root.finish()
     if req.terrain.soil is not None:
         find_soil(req.terrain.soil, path.parent, str(path), "requirements.terrain.soil")
@@ -449,9 +468,10 @@ def read_lander(path: str | Path, overrides: dict | None = None, root: Node | No
         member_loads = landing_loads(truss=None if loads.telescoping else loads.cases[0].truss,
                                      telescoping=loads.telescoping)
     landings = LandingSpec(study, envelopes, "criteria", member_loads)
-    derived = partial(landing_tripod_items, *tripod, rules, mats, tuple(others)) if tripod else None
+    derived = (partial(_tripod_landing_items, *tripod, rules, mats, req.required, items[n_members:]) if tripod
+               else None)
     spec = DesignSpec(path, name, title, scene.scene.mass, len(scene.scene.legs), units, req.required, req.decimals,
-                      mats, tuple(nodes), loads, landings, req.weight_goal, rules, derived)
+                      mats, items, loads, landings, req.weight_goal, rules, derived)
     return Lander(spec, scene, req, document)
 
 

@@ -35,9 +35,10 @@ import numpy as np
 from alightsize.checks.rules import RULES, Rules
 from alightsize.common.config import Node
 from alightsize.common.errors import InputError
+from alightsize.common.typed import validate
 from alightsize.model.materials import Material
 from alightsize.pipeline.cores import core_prism
-from alightsize.pipeline.members import _pin, _plate
+from alightsize.pipeline.members import Member, _pin, _plate
 from alightsize_sim.tripod_leg import TripodLeg, strut_forces
 
 INVERTED = ("primary_strut", "secondary_strut", "end_pin", "footpad", "primary_core", "secondary_core")
@@ -199,7 +200,8 @@ def tripod_member_items(node: Node, name: str, leg: TripodLeg, loads: TripodLoad
         return _cores(node, name, leg, materials)
     extra = {"end_pin": ("pin",), "footpad": ("load_radius",)}.get(name, ())
     node.allow((*TRIPOD_ITEM_KEYS, "rules", *extra))
-    rules = RULES[node.string("rules", default_rules, choices=tuple(RULES))]
+    member = validate(Member, node.data, node.file, node.path)
+    rules = RULES[member.rules or default_rules]
     base = {k: node.data[k] for k in TRIPOD_ITEM_KEYS if k in node.data}
     lp, l1, l2 = leg.rest_lengths
     a, b = leg.knee_offset, lp - leg.knee_offset
@@ -222,7 +224,7 @@ def tripod_member_items(node: Node, name: str, leg: TripodLeg, loads: TripodLoad
         ends = [("end_pin_primary", primary_end)] + [
             (f"end_pin_secondary_{i + 1}", max(loads.secondary_compression[i], loads.secondary_tension[i]))
             for i in range(2)]
-        checks = {n: _pin([_n(p)], node) if p > 0 else [] for n, p in ends}
+        checks = {n: _pin([_n(p)], member, node) if p > 0 else [] for n, p in ends}
         return [{"name": n, **base, "count": 2, "check": checks[n]} for n, _ in ends]
     else:                                               # footpad
         section = node.table("section")
@@ -231,17 +233,17 @@ def tripod_member_items(node: Node, name: str, leg: TripodLeg, loads: TripodLoad
                                 repr(section.raw("diameter")))
         base["section"] = {**section.data, "diameter": _m(leg.footpad_diameter)}
         return [{"name": "footpad", **base, "weight": base.get("weight", {"method": "disc"}),
-                 "check": _plate("plate_supported_center_load", _n(loads.footpad), node, rules)}]
+                 "check": _plate("plate_supported_center_load", _n(loads.footpad), member, node, rules)}]
     return [{"name": n, **base, "length": _m(length), "weight": base.get("weight", w), "check": checks}
             for n, length, w, checks in items]
 
 
 def landing_tripod_items(leg: TripodLeg, members: Node, rules: str, materials: dict[str, Material],
-                         others: tuple[Node, ...], rows: tuple[dict, ...]) -> tuple[Node, ...]:
-    """The items of a tripod lander: its `[members.NAME]` tables (`members`, as read: a copy is consumed) under the
-    load extremes of the stored landing `rows` (`TripodLoads.from_landings`), then the `others` ([[item]])."""
+                         rows: tuple[dict, ...]) -> list[Node]:
+    """The item tables of a tripod lander's `[members.NAME]` tables (`members`, as read: a copy is consumed) under
+    the load extremes of the stored landing `rows` (`TripodLoads.from_landings`)."""
     fresh = Node(members.file, members.path, copy.deepcopy(members.data), members.context)
-    return (*tripod_items(leg, TripodLoads.from_landings(rows), fresh, rules, materials), *others)
+    return tripod_items(leg, TripodLoads.from_landings(rows), fresh, rules, materials)
 
 
 def tripod_items(leg: TripodLeg, loads: TripodLoads, members: Node, rules: str,

@@ -6,13 +6,13 @@ import itertools
 import json
 import re
 from collections import Counter
-from math import isfinite
+from math import degrees, isfinite
 from pathlib import Path
 
 import pandas as pd
 from openpyxl import Workbook
 
-from alightsize import __version__
+from alightsize.common.version import __version__
 from alightsize.common.figures import save_png
 from alightsize.common.trace import Step
 from alightsize.common.units import fmt, to_display, unit_label
@@ -96,7 +96,7 @@ def context(res) -> dict:
                "w_sized": fmt(s.weight_sized, "mass", system) if s.weight_sized else "",
                "saved": fmt(s.weight_printed - s.weight_sized, "mass", system)
                if s.weight_printed and s.weight_sized else ""} for s in res.sizings]
-    return {"loads": _loads_context(res, system), "references": _references(cfg, system),
+    return {"loads": _loads_context(res, system), "references": _references(res, system),
             "interface": _interface(res, system),
             "verdict": res.verdict(), "checks_ok": res.checks_ok, "landings": _landings(cfg, system),
             "headlines": res.headlines(system), "closest_head": CLOSEST_HEAD,
@@ -189,7 +189,7 @@ def _landings(cfg, system: str) -> dict | None:
 def _interface(res: DesignResult, system: str) -> list[dict]:
     """The interface loads (the "interface_loads" table): each body hardpoint's largest force, its components along
     the body's geometric axes and the landing that produced it."""
-    tables = res.to_pandas()
+    tables = res.tables
     if "interface_loads" not in tables:
         return []
     return [{"leg": r.leg, "hardpoint": r.hardpoint, "force": fmt(r.force_N, "force", system),
@@ -207,34 +207,25 @@ def _loads_context(res: DesignResult, system: str) -> dict | None:
                          cfg.landings.quasi_static.telescoping if landed else None)
 
 
-def _reference_label(cfg, key: str) -> str:
-    """A check's load key, 'item["Upper Truss"].check["column_buckling"].load' -> "Upper Truss / column buckling
-    (load)"."""
-    for item in cfg.items:
-        for check in item.checks:
-            if key.startswith(check.where + "."):
-                return f"{item.name} / {check.kind.replace('_', ' ')} ({key[len(check.where) + 1:]})"
-    return key
-
-
-def _references(cfg, system: str) -> list[dict]:
-    """The checks' envelope loads; with landing cases also the quasi-static load, which governed and, for a
-    landing, its conditions and outcome."""
-    from math import degrees
-    landings = landing_rows(cfg, system) if cfg.landings is not None else {}
+def _references(res: DesignResult, system: str) -> list[dict]:
+    """The checks' envelope loads (the "load_references" table); with landing cases also the quasi-static load,
+    which governed and, for a landing, its conditions and outcome."""
+    if "load_references" not in res.tables:
+        return []
+    landings = landing_rows(res.config, system) if res.config.landings is not None else {}
     out = []
-    for r in cfg.load_refs:
-        row = {"key": _reference_label(cfg, r.key), "envelope": r.envelope, "member": r.member, "sense": r.sense,
-               "factor": f"{r.factor:g}", "value": fmt(r.value, "force", system),
-               "at": ", ".join(f"{degrees(a):+.0f}" for a in r.extreme.at) if r.extreme else "",
-               "configuration": r.extreme.configuration if r.extreme else "", "quasi_static": None, "governs": "",
-               "landing": None}
-        if cfg.landings is not None and r.extreme is not None and r.envelope in cfg.landings.envelopes:
-            qs = cfg.landings.quasi_static_load(r.envelope, r.member, r.sense)
-            row["quasi_static"] = fmt(qs * r.factor, "force", system) if qs is not None else "-"
-            row["governs"] = "landing" if r.extreme.configuration.startswith(LANDING) else "quasi-static"
-            row["landing"] = landings.get(r.extreme.configuration.removeprefix(LANDING))
-        out.append(row)
+    for r in res.tables["load_references"].to_dict("records"):
+        dynamic, checked = isinstance(r["governs"], str), isinstance(r["item"], str)      # else None or NaN
+        configuration = r["configuration"] if isinstance(r["configuration"], str) else ""
+        out.append({
+            "key": f"{r['item']} / {r['kind'].replace('_', ' ')} ({r['key']})" if checked else r["load_key"],
+            "envelope": r["envelope"], "member": r["member"], "sense": r["sense"], "factor": f"{r['factor']:g}",
+            "value": fmt(r["value_N"], "force", system),
+            "at": ", ".join(f"{degrees(a):+.0f}" for a in r["at_rad"]) if isinstance(r["at_rad"], tuple) else "",
+            "configuration": configuration,
+            "quasi_static": (fmt(r["quasi_static_N"], "force", system) if pd.notna(r["quasi_static_N"]) else "-")
+            if dynamic else None, "governs": r["governs"] if dynamic else "",
+            "landing": landings.get(configuration.removeprefix(LANDING)) if dynamic else None})
     return out
 
 
@@ -265,7 +256,7 @@ def write_workbook(res, path: Path) -> None:
 def stress_frame(res: DesignResult, system: str) -> pd.DataFrame:
     """One row per check (the "checks" table): stress and allowable in the display unit to 0.1, f and MS to 4
     places (empty where infinite)."""
-    checks, su = res.to_pandas()["checks"], unit_label("stress", system)
+    checks, su = res.tables["checks"], unit_label("stress", system)
 
     def stress(col: str) -> list:
         return [round(to_display(v, "stress", system), 1) if pd.notna(v) else None for v in checks[col]]
@@ -283,7 +274,7 @@ def stress_frame(res: DesignResult, system: str) -> pd.DataFrame:
 def weights_frame(res: DesignResult, system: str) -> pd.DataFrame:
     """One row per weight entry (the "weights" table) in the display unit, then the totals per leg, for all legs
     and as a percentage of the capsule."""
-    cfg, weights, wu = res.config, res.to_pandas()["weights"], unit_label("mass", system)
+    cfg, weights, wu = res.config, res.tables["weights"], unit_label("mass", system)
     rows = []
     for w in weights.to_dict("records"):
         each = round(to_display(w["weight_each_kg"], "mass", system), 4)
@@ -299,7 +290,7 @@ def weights_frame(res: DesignResult, system: str) -> pd.DataFrame:
 
 def sizing_frame(res: DesignResult, system: str) -> pd.DataFrame:
     """One row per sized item (the "sizing" table), lengths and weights in the display units."""
-    t = res.to_pandas()["sizing"]
+    t = res.tables["sizing"]
     lu, wu = unit_label("length", system), unit_label("mass", system)
     length = lambda v: to_display(v, "length", system)                                    # noqa: E731
     mass = lambda v: to_display(v, "mass", system) if pd.notna(v) and v else None          # noqa: E731
@@ -347,12 +338,12 @@ def _png(fig, path: Path) -> None:
 def audit_json(res: DesignResult) -> dict:
     """The audit (alightsize.audit/1): the required factor, the verdict and every check (the "checks" table)."""
     return {"schema": AUDIT_SCHEMA, "required_design_factor": res.config.required, "ok": all(r.ok for r in res.records),
-            "checks": json_records(res.to_pandas()["checks"])}
+            "checks": json_records(res.tables["checks"])}
 
 
 def summary_json(res: DesignResult) -> dict:
     """summary.json (alightsize.design/1, docs/contracts.md) from the result and its tables."""
-    cfg, tables = res.config, res.to_pandas()
+    cfg, tables = res.config, res.tables
     total = res.per_leg * cfg.legs
     items = tables["weights"][["item", "count_per_leg", "weight_each_kg"]]
     out = {"schema": SCHEMA, "ok": res.ok, "configuration": cfg.configuration, "verdict": res.verdict(),

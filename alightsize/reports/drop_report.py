@@ -22,7 +22,7 @@ import pandas as pd
 
 from alightsize_sim.landing import Result
 
-from alightsize import __version__
+from alightsize.common.version import __version__
 
 from alightsize.reports import drop_tables
 

@@ -14,7 +14,7 @@ from alightsize.common.figures import save_png
 from alightsize.loads.envelopes import MEMBER_LABELS, Extreme
 from alightsize.loads.quasi_static import LoadsResult
 from alightsize.common.units import fmt, to_display, unit_label
-from alightsize import __version__
+from alightsize.common.version import __version__
 from alightsize.reports.rendering import frame_sheet, save_workbook, template_env
 
 SCHEMA = "alightsize.loads/1"

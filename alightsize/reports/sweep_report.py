@@ -11,7 +11,7 @@ from pathlib import Path
 import pandas as pd
 from openpyxl import Workbook
 
-from alightsize import __version__
+from alightsize.common.version import __version__
 from alightsize.common.atomic import write_atomic
 from alightsize.common.figures import save_png
 from alightsize.landings.outcomes import MEANING, SYMBOL, SweepResult

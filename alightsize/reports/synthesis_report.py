@@ -11,7 +11,7 @@ from pathlib import Path
 
 from openpyxl import Workbook
 
-from alightsize import __version__
+from alightsize.common.version import __version__
 from alightsize.common.atomic import write_atomic
 from alightsize.common.units import registry
 from alightsize.reports.design_report import _png, write_design

@@ -21,7 +21,7 @@ from collections import Counter
 from dataclasses import asdict, dataclass, replace
 from pathlib import Path
 
-from alightsize import __version__
+from alightsize.common.version import __version__
 from alightsize.common.config import Node, load_toml
 from alightsize.common.errors import InputError
 from alightsize.landings.criteria import violation_kinds

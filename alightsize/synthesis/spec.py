@@ -29,9 +29,13 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from math import isfinite
 from pathlib import Path
+from typing import Annotated, Any
+
+from pydantic import PlainValidator, model_validator
 
 from alightsize.common.config import SEED_MAX, Node, load_toml
 from alightsize.common.errors import InputError
+from alightsize.common.typed import Integer, Number, Quantities, Table, refuse, validate
 from alightsize.common.units import registry
 from alightsize.pipeline.lander import cell_curve, crush_stroke
 
@@ -85,19 +89,70 @@ class SynthesisSpec:
     data: dict = field(default_factory=dict, repr=False)     # the lander file as read (each candidate varies it)
 
 
-def _quantity(node: Node, key: str, text) -> tuple[float, str, float]:
-    """(SI value, unit as written, display units per SI unit) of a bound; angles in rad."""
+def _quantity(text) -> tuple[float, str, float]:
+    """(SI value, unit as written, display units per SI unit) of a quantity of any dimension; angles in rad. A
+    ValueError says what was expected."""
     try:
         q = registry().Quantity(str(text))
     except Exception:                                  # noqa: BLE001 - pint raises many kinds on garbage
-        raise node.error(key, "a quantity with its unit, like \"2 m\" or \"8 kN\"", repr(text)) from None
+        raise ValueError("a quantity with its unit, like \"2 m\" or \"8 kN\"") from None
     unit = str(text).strip().partition(" ")[2].strip()
     if not hasattr(q, "units") or not unit:
-        raise node.error(key, "a quantity with its unit, like \"2 m\" or \"8 kN\"", repr(text))
+        raise ValueError("a quantity with its unit, like \"2 m\" or \"8 kN\"")
     base = float(q.to_base_units().magnitude)
     if not isfinite(base):
-        raise node.error(key, "a finite quantity", repr(text))
+        raise ValueError("a finite quantity")
     return base, unit, 1.0 / float(registry().Quantity(1.0, unit).to_base_units().magnitude)
+
+
+def _bounds(raw: Any) -> tuple[float, float, str, float]:
+    """(low, high, unit, display units per SI unit) of a free parameter's [low, high]."""
+    if not (isinstance(raw, list) and len(raw) == 2):
+        raise refuse("bounds [low, high] with units", repr(raw))
+    parsed = []
+    for v in raw:
+        try:
+            parsed.append(_quantity(v))
+        except ValueError as exc:
+            raise refuse(str(exc), repr(v)) from None
+    (lo, unit, per_si), (hi, unit_hi, _) = parsed
+    if registry().Quantity(1.0, unit).dimensionality != registry().Quantity(1.0, unit_hi).dimensionality:
+        raise refuse("both bounds of one dimension", repr(raw))
+    if not lo < hi:
+        raise refuse("low < high", repr(raw))
+    return lo, hi, unit, per_si
+
+
+class Trade(Table):
+    horizontal_speed: Annotated[tuple[float, ...], Quantities(TRADE_AXES["horizontal_speed"], minimum=1)] = ()
+    slope: Annotated[tuple[float, ...], Quantities(TRADE_AXES["slope"], minimum=1)] = ()
+    generations: Annotated[int, Integer(0, 1000)] | None = None
+    population: Annotated[int, Integer(2, 200)] | None = None
+    samples: Annotated[int, Integer(0, 5000)] | None = None
+    note: str = ""
+
+
+class Synthesis(Table):
+    """The `[synthesis]` table (docs/synthesis.md)."""
+
+    seed: Annotated[int, Integer(0, SEED_MAX)] = 1
+    generations: Annotated[int, Integer(0, 1000)] = 10
+    population: Annotated[int, Integer(2, 200)] = 5
+    samples: Annotated[int, Integer(0, 5000)] | None = None
+    check_samples: Annotated[int, Integer(0, 100_000)] = 1000
+    check_seed: Annotated[int, Integer(0, SEED_MAX + 1)] | None = None
+    stroke_margin: Annotated[float, Number("nonnegative")] = 0.0
+    free: dict[str, Annotated[tuple[float, float, str, float], PlainValidator(_bounds)]]
+    trade: Trade | None = None
+    note: str = ""
+
+    @model_validator(mode="after")
+    def _ranges(self):
+        if self.stroke_margin >= 1:
+            raise refuse("a fraction of the stroke in [0, 1)", repr(self.stroke_margin), "stroke_margin")
+        if not self.free:
+            raise refuse("at least one free parameter with bounds", "none", "free")
+        return self
 
 
 def _lookup(data: dict, key: str):
@@ -108,42 +163,38 @@ def _lookup(data: dict, key: str):
     return data
 
 
-def _free(node: Node, root: Node) -> tuple[FreeParameter, ...]:
+def free_parameters(bounds: dict[str, tuple[float, float, str, float]], root: Node) -> tuple[FreeParameter, ...]:
+    """The free parameters, each starting at the lander file's own value: a cell's crushing force or stroke from
+    its curve, any other scene key as written; a key the file does not set, or bounds that do not hold its value,
+    are bad input."""
     out = []
-    for key in node.data:
-        raw = node.raw(key)
-        if not (isinstance(raw, list) and len(raw) == 2):
-            raise node.error(key, "bounds [low, high] with units", repr(raw))
-        (lo, unit, per_si), (hi, unit_hi, _) = (_quantity(node, key, v) for v in raw)
-        if registry().Quantity(1.0, unit).dimensionality != registry().Quantity(1.0, unit_hi).dimensionality:
-            raise node.error(key, "both bounds of one dimension", repr(raw))
-        if not lo < hi:
-            raise node.error(key, "low < high", repr(raw))
+    for key, (lo, hi, unit, per_si) in bounds.items():
+        where = f"synthesis.free.{key}"
         parts = key.split(".")
         if parts[0] == "cells":
             if len(parts) != 3 or parts[2] not in CELL_KEYS or parts[1] not in (root.data.get("cells") or {}):
-                raise node.error(key, "cells.NAME.crush_force or cells.NAME.stroke of a [cells.NAME] table", repr(key))
+                raise InputError(root.file, where, "cells.NAME.crush_force or cells.NAME.stroke of a [cells.NAME] "
+                                 "table", repr(key))
             force, stroke = crush_stroke(*cell_curve(root, parts[1]))
             start = force if parts[2] == "crush_force" else stroke
         else:
             if parts[0] not in ("capsule", "legs", "terrain", "initial", "controls"):
-                raise node.error(key, "a cell parameter or a scene key (capsule.*, legs.*, ...)", repr(key))
+                raise InputError(root.file, where, "a cell parameter or a scene key (capsule.*, legs.*, ...)",
+                                 repr(key))
             value = _lookup(root.data, key)
             if value is None:
-                raise node.error(key, "a key the lander file sets (its value is the start)", "no such key in the file")
-            start, _, _ = _quantity(node, key, value)
-        out.append(FreeParameter(key, lo, hi, start, unit, per_si))
-    node.finish()
-    if not out:
-        raise node.error("", "at least one free parameter with bounds", "none")
+                raise InputError(root.file, where, "a key the lander file sets (its value is the start)",
+                                 "no such key in the file")
+            try:
+                start, _, _ = _quantity(value)
+            except ValueError as exc:
+                raise InputError(root.file, where, str(exc), repr(value)) from None
+        p = FreeParameter(key, lo, hi, start, unit, per_si)
+        if not p.low <= p.start <= p.high:
+            raise InputError(root.file, where, f"bounds that hold the file's own value {p.show(p.start)} (the "
+                             "starting design)", f"[{p.show(p.low)}, {p.show(p.high)}]")
+        out.append(p)
     return tuple(out)
-
-
-def _budget(node: Node, default: Budget) -> Budget:
-    return Budget(node.integer("generations", default.generations, minimum=0, maximum=1000),
-                  node.integer("population", default.population, minimum=2, maximum=200),
-                  node.integer("samples", default.samples, minimum=0, maximum=5000) if node.has("samples")
-                  else default.samples)
 
 
 def read_synthesis(path: str | Path) -> SynthesisSpec:
@@ -152,39 +203,16 @@ def read_synthesis(path: str | Path) -> SynthesisSpec:
     root = load_toml(path)
     if "synthesis" not in root.data:
         raise InputError(str(path), "synthesis", "a [synthesis] table with [synthesis.free] bounds", "none")
-    node = root.table("synthesis")
-    node.allow(("seed", "generations", "population", "samples", "check_samples", "check_seed", "stroke_margin",
-                "free", "trade", "note"))
-    seed = node.integer("seed", 1, minimum=0, maximum=SEED_MAX)
-    budget = _budget(node, Budget(10, 5, None))
-    check_samples = node.integer("check_samples", 1000, minimum=0, maximum=100_000)
-    check_seed = node.integer("check_seed", seed + 1, minimum=0, maximum=SEED_MAX + 1)
-    margin = node.number("stroke_margin", 0.0, positive=False)
-    if not 0 <= margin < 1:
-        raise node.error("stroke_margin", "a fraction of the stroke in [0, 1)", repr(margin))
-    free = _free(node.table("free"), root)
-    trade, trade_budget = {}, Budget(max(1, budget.generations // 2), budget.population, budget.samples)
-    tnode = node.table("trade", optional=True)
-    if tnode:
-        tnode.allow((*TRADE_AXES, "generations", "population", "samples", "note"))
-        for axis, dim in TRADE_AXES.items():
-            if tnode.has(axis):
-                values = tnode.raw(axis)
-                if not isinstance(values, list) or not values:
-                    raise tnode.error(axis, "a list of values with units", repr(values))
-                trade[axis] = tuple((tnode.parse_quantity(f"{axis}[{i}]", v, dim, positive=False), str(v))
-                                    for i, v in enumerate(values))
-        trade_budget = _budget(tnode, trade_budget)
-        tnode.string("note", "")
-        tnode.finish()
-    node.string("note", "")
-    node.finish()
-    for p in free:
-        if not p.low <= p.start <= p.high:
-            raise InputError(str(path), f"synthesis.free.{p.key}",
-                             f"bounds that hold the file's own value {p.show(p.start)} (the starting design)",
-                             f"[{p.show(p.low)}, {p.show(p.high)}]")
-    return SynthesisSpec(path, free, seed, budget, check_samples, check_seed, trade, trade_budget, margin, root.data)
+    s = validate(Synthesis, root.data["synthesis"], str(path), "synthesis")
+    budget = Budget(s.generations, s.population, s.samples)
+    t, written = s.trade or Trade(), root.data["synthesis"].get("trade", {})
+    trade = {axis: tuple(zip(getattr(t, axis), map(str, written[axis]))) for axis in TRADE_AXES if axis in written}
+    trade_budget = Budget(max(1, budget.generations // 2) if t.generations is None else t.generations,
+                          budget.population if t.population is None else t.population,
+                          budget.samples if t.samples is None else t.samples)
+    check_seed = s.seed + 1 if s.check_seed is None else s.check_seed
+    return SynthesisSpec(path, free_parameters(s.free, root), s.seed, budget, s.check_samples, check_seed, trade,
+                         trade_budget, s.stroke_margin, root.data)
 
 
 def free_parameter(spec: SynthesisSpec, key: str) -> FreeParameter:

@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 
 from alightsize.common.config import Node
-from alightsize.pipeline.config import prepare, read_design
+from alightsize.pipeline.config import read_design
 from alightsize.common.errors import InputWarning
 from alightsize.model.sections import read_section
 from conftest import CONFIGS, EXAMPLES, ROOT
@@ -198,12 +198,25 @@ def test_key_paths_name_items_and_checks(tmp_path):
     assert r.stderr.startswith(f'alightsize: error: {cfg}: item["Strut"].check["tension"].load: expected a force')
 
 
-def test_report_labels_a_checks_load_key_by_item_and_kind():
-    from alightsize.reports.design_report import _reference_label
-    cfg = prepare(read_design(EXAMPLES / "articulated_3457.toml"))
-    truss = cfg.items[0]
-    assert truss.checks[1].where == 'item["Upper Truss"].check["column_buckling"]'
-    assert _reference_label(cfg, truss.checks[1].where + ".load") == "Upper Truss / column buckling (load)"
+def test_report_labels_a_checks_load_key_by_item_and_kind(tmp_path):
+    """A check's envelope load is a row of the design's "load_references" table, labelled in the report by item
+    and check kind; its value is the envelope's extreme (the same number: nothing is recomputed on the way)."""
+    from alightsize.loads.quasi_static import pick
+    from alightsize.pipeline.design import run_design
+    from alightsize.reports.design_report import context
+    text = (EXAMPLES / "articulated_3457_envelopes.toml").read_text()
+    head = '[landings]\nstudy = "studies/design_landings_3457.toml"\nenvelopes = ["3457"]\n'
+    assert head in text and 'file = "loads/articulated.toml"' in text
+    loads = (EXAMPLES / "loads" / "articulated.toml").as_posix()
+    cfg = tmp_path / "quasi_static.toml"           # the quasi-static envelopes alone: no landing cases
+    cfg.write_text(text.replace(head, "").replace('file = "loads/articulated.toml"', f'file = "{loads}"'))
+    res = run_design(read_design(cfg))
+    refs = res.to_pandas()["load_references"]
+    row = refs[(refs["item"] == "Upper Truss") & (refs["kind"] == "column_buckling")].iloc[0]
+    assert row["load_key"] == 'item["Upper Truss"].check["column_buckling"].load' and row["key"] == "load"
+    assert row["value_N"] == abs(pick(res.config.loads, "3457", "PU1", "compression").value)
+    shown = context(res)["references"][int(row.name)]
+    assert shown["key"] == "Upper Truss / column buckling (load)" and shown["governs"] == ""
 
 
 @pytest.mark.parametrize("text, dim", [

@@ -172,7 +172,9 @@ def test_crushing_force_change_reaches_landings_envelopes_and_checks(tmp_path):
     ({"lug_thickness": "lug_thicknes"}, "members.swivel_pin.pin.lug_thicknes"),
     ({'vertical_speed = ["1 m/s", "3 m/s"]': 'vertical_speed = ["3 m/s", "1 m/s"]'},
      "requirements.envelope.vertical_speed"),
-    ({'load_radius = "10 mm"': 'load_radius = "10 kg"'}, "load_radius"),
+    ({'load_radius = "10 mm"': 'load_radius = "10 kg"'}, "members.axial_cap.load_radius:"),   # as written
+    ({'load_radius = "10 mm"': 'load_radius = "10 mm"\nrole = "rod"'}, "members.axial_cap.role:"),   # not ignored
+    ({'[members.upper_tube]\n': '[members.upper_tube]\ncolumn_length = "1 m"\n'}, "members.upper_tube.column_length:"),
     ({"[structure]\n": "[structure]\nbearing = 1\n"}, "structure"),
     ({'slope = "12 deg"': 'slope = ["0 deg", "-12 deg"]'}, "requirements.envelope.slope"),
 ])

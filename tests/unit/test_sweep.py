@@ -75,6 +75,14 @@ def test_truncated_normal_draws_have_the_closed_form_mean():
     assert x.mean() == pytest.approx(exact, abs=0.01)
 
 
+def test_a_dispersion_bound_beyond_any_float_is_bad_input():
+    """An integer bound no float holds (TOML integers are unbounded here) is refused naming its key, not an
+    internal error."""
+    node = Node("s.toml", "dispersions", {"x": {"dist": "uniform", "low": 10 ** 400, "high": 1}})
+    with pytest.raises(InputError, match=r"dispersions\.x\.low: expected a finite value"):
+        read_dispersion(node, "x")
+
+
 def test_runs_depend_only_on_seed_and_sample(tmp_path):
     """Sample k draws the same values at every grid point and in every study size (default_rng([seed, k]))."""
     small = read_study(_study(tmp_path, samples=3))

@@ -84,9 +84,9 @@ def test_free_cell_parameters_and_crushable_weight():
     assert max(curve.force[:-1]) == pytest.approx(12e3, rel=1e-12)
     assert curve.deflection[-2] == pytest.approx(0.6, rel=1e-12)
     hc = library()["al-honeycomb"]
-    node = next(n for n in lander.spec.items if n.data["name"] == "Axial honeycomb")
-    w = node.data["weight"]
-    area, length = (float(w[k].split()[0]) for k in ("area", "length"))
+    item = next(i for i in lander.spec.items if i.name == "Axial honeycomb")
+    assert item.weight is not None
+    area, length = (item.weight.params[k] for k in ("area", "length"))
     expected = hc.density * 12e3 * 0.6 / (hc.crush_strength * hc.stroke_fraction)
     assert area * length * hc.density == pytest.approx(expected, rel=1e-12)
     # the report's own axial core: 3750 lbf over a 1.074 in diameter is the material's crush strength (0.1 %,
@@ -120,6 +120,26 @@ def test_a_search_budget_beyond_its_documented_range_exits_2(tmp_path, key, valu
     bad.write_text(text.replace("[synthesis]\n", f"[synthesis]\n{key} = {value}\n", 1))
     with pytest.raises(InputError, match=f"synthesis.{key}"):
         read_synthesis(bad)
+
+
+@pytest.mark.parametrize("old, new, message", [
+    ('"legs.radius" = ["1.6 m", "3.2 m"]', '"legs.radius" = ["3.2 m", "1.6 m"]',
+     "synthesis.free.legs.radius: expected low < high"),
+    ('"legs.radius" = ["1.6 m", "3.2 m"]', '"legs.radius" = ["2.5 m", "3.2 m"]',
+     "synthesis.free.legs.radius: expected bounds that hold the file's own value 2.4 m"),
+    ('"cells.axial.crush_force" = ["4 kN", "16 kN"]\n"cells.pad.crush_force" = ["2 kN", "8 kN"]\n'
+     '"legs.radius" = ["1.6 m", "3.2 m"]\n', "", "synthesis.free: expected at least one free parameter"),
+    ('slope = ["0 deg", "6 deg"', 'slope = ["0 deg", "6 m"', "synthesis.trade.slope[1]: expected an angle"),
+])
+def test_a_bad_synthesis_table_names_the_key_as_written(tmp_path, old, new, message):
+    """[synthesis] errors name the key as written (the file's start 2.4 m lies outside [2.5, 3.2] m)."""
+    text = EXAMPLE.read_text()
+    assert old in text
+    bad = tmp_path / "bad.toml"
+    bad.write_text(text.replace(old, new, 1))
+    with pytest.raises(InputError) as err:
+        read_synthesis(bad)
+    assert f"{bad}: {message}" in str(err.value)
 
 
 def test_small_synthesis_is_feasible_reproducible_and_resumes(tmp_path):

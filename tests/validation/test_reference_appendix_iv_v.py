@@ -8,7 +8,7 @@ from math import log, pi, sqrt
 
 import pytest
 
-from alightsize.checks.audit import run_audit
+from alightsize.pipeline.audit import run_audit
 from alightsize.pipeline.design import run_design
 from alightsize.pipeline.config import prepare, read_design
 from reference_data import CRITICAL, DESIGN_FACTORS, PRINTED_STRESSES, TABLES

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 
-from alightsize.checks.sizing import size_item
+from alightsize.pipeline.sizing import size_item
 from alightsize.pipeline.config import prepare, read_design
 from alightsize.pipeline.design import run_design
 from alightsize.reports.design_report import summary_json

@@ -5,13 +5,11 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 from itertools import groupby, pairwise
-from typing import TYPE_CHECKING
 
 import numpy as np
 from scipy.optimize import minimize_scalar
 
-if TYPE_CHECKING:                               # it sizes a design's item; it never builds one
-    from alightsize.pipeline.items import Item
+from alightsize.pipeline.items import Item
 
 Fn = Callable[[float], float]                   # the governing factor, or the weight, of a dimension's value
 

@@ -4,15 +4,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from math import isfinite
-from typing import TYPE_CHECKING
 from xml.sax.saxutils import escape, quoteattr
 
 from alightsize.checks.kinds import Outcome
-
-if TYPE_CHECKING:                               # it reads a design's items; it never builds them
-    from alightsize.pipeline.items import Item
-    from alightsize.pipeline.config import DesignConfig
-
+from alightsize.pipeline.config import DesignConfig
+from alightsize.pipeline.items import Item
 
 
 @dataclass(frozen=True)
