@@ -268,14 +268,7 @@ def footpad_force(geo, cells, i, mem, shape, P0, sliding, hold, mu_s, mu_d, r, R
     if sliding < 0:                                             # held on a vertical face (FACE)
         return sliding, power, alpha, beta, psi, 1.0, 0.0, 0.0
     margin = mu_s * max(fe3, 0.0) + FLOOR - fe12 if not sliding else 1.0   # watched only while it sticks
-    # eq. 33-34. A sliding footpad sticks once its push is FLOOR below the dynamic limit (or next to no load):
-    # where its last slide ended it sits at that limit, and an empty or very short step (an event at its start)
-    # must not stop it there, or two slides restart each other at one instant.
-    if sliding:
-        stops = fe12 <= max(mu_d * max(fe3, 0.0) - FLOOR, FLOOR)
-    else:
-        stops = hold or fe12 <= mu_s * max(fe3, 0.0) + FLOOR
-    if stops:
+    if (hold and not sliding) or fe12 <= (mu_d if sliding else mu_s) * max(fe3, 0.0) + FLOOR:   # eq. 33-34
         return 0, power, alpha, beta, psi, margin, 0.0, 0.0
     h0 = fe12 - mu_d * max(fe3, 0.0)
     if h0 <= 0.0:                                               # static limit exceeded, dynamic one not
