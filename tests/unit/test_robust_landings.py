@@ -4,11 +4,13 @@ outcome and the energy audit: work in = work out (kinetic and potential energy a
 what is left), closed within 1e-4 of the energy in; the integration error at these tolerances is 1e-6 to 1e-5
 (docs/notes/simulator-log.md), so 1e-4 fails only on a term the audit does not account for."""
 
+import dataclasses
 import importlib.util
 
 import pytest
 
 from alightsize.common.resources import data_dir
+from alightsize.landings.random_landings import random_landing
 from alightsize.model.scene_config import read_scene
 from alightsize.pipeline.lander import read_lander
 from alightsize_sim.landing import simulate
@@ -50,6 +52,17 @@ def test_free_play_axial_cell_with_footpad_mass_lands():
             "requirements.monte_carlo.samples": 0, "controls.t_final": "2 s"}
     for cfg in _cases("lunar_lander.toml", over, {"corner-30", "corner-32"}):
         _lands(cfg)
+
+
+def test_slides_stopped_by_an_empty_step_land():
+    """Landing 870 of the configuration-1 sweep (benchmarks/random_scenes.py, seed 20261121; massless footpads,
+    mu_D 0.70): legs 1 and 3 slid at their dynamic limit; an event at a step's start stopped both where their
+    slides had ended, and each one's restart stopped the other's at t = 0.4995 s until the step size collapsed.
+    It comes to rest (quiescence)."""
+    cfg = read_scene(EXAMPLES / "affdl-tr-66-33" / "scenes" / "telescoping_config1.toml")
+    scene = random_landing(cfg.scene, 20261121, 870)
+    res = _lands(dataclasses.replace(cfg, scene=scene, controls=dataclasses.replace(cfg.controls, t_final=1.0)))
+    assert res.status == "quiet"
 
 
 @pytest.mark.skipif(ROOT is None, reason="needs the repository's benchmarks/")
