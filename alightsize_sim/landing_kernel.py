@@ -27,7 +27,7 @@ from .footpad_mass import (FACE, FLOOR, STARTED, ground_event, integrates_damper
 from .footpad_slip import contact_force, slides_by_position, slip_events
 from .rigid_body import free_flight, quat_matrix, quat_rate
 from .stability import hanging_margin, quiescence_momenta, quiescence_update, stable_by_energy, tipping_margins
-from .legs import TELESCOPING, free_footpad, leg_force, lift_shape, main_set, member_strike
+from .legs import TELESCOPING, at_set, free_footpad, leg_force, lift_shape, main_set, member_strike
 from .telescoping_leg import aim
 from .terrain import clearance
 from .vec3 import cross, mtv, mv
@@ -423,9 +423,11 @@ def _switch(S, y, which, W):
         # default event_tol and band): still above it, it met a face at the surface.
         band = S.ctl[C_BAND]
         on_face = pad[2] - top > (-0.5 * band if locked else FACE_GAP)
-        if on_face and geo[7][which] == TELESCOPING and shape[which, 2] < 0.0:
-            shape[which, 2] = 0.0       # one that left short of its set is caught at its set, the band from leaving
-            pad = free_footpad(geo, cells, which, mem[which], shape[which], y[0:3], R)
+        if on_face:             # one that left short of its set is caught at its set, the band from leaving
+            caught = at_set(geo, cells, which, mem[which], shape[which])
+            if caught[2] != shape[which, 2]:
+                shape[which, 0], shape[which, 1], shape[which, 2] = caught
+                pad = free_footpad(geo, cells, which, mem[which], shape[which], y[0:3], R)
         P[which, 0], P[which, 1], P[which, 2] = pad[0], pad[1], pad[2] if on_face else top
         contact[which] = 1
         sliding[which] = FACE if on_face else 1                 # (re)contact slides on mu_D (eq. 33)

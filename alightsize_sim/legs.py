@@ -104,6 +104,18 @@ def _free_footpad(geo, cells, i, mem, shape, r, R):
     return _pick(geo, free_footpad, "free_footpad")
 
 
+def at_set(geo, cells, i, mem, shape):
+    """A free leg's shape with its main cell at least at its permanent set (see the kind's module)."""
+    if geo[7][i] == ARTICULATED:
+        return articulated_leg.at_set(geo, cells, i, mem, shape)
+    return telescoping_leg.at_set(geo, cells, i, mem, shape)
+
+
+@overload(at_set)
+def _at_set(geo, cells, i, mem, shape):
+    return _pick(geo, at_set, "at_set")
+
+
 def lift_shape(geo, cells, i, mem, alpha, beta, psi, main, r, R):
     """Stored free geometry of a leg lifting off with the given shape and main-cell deflection (see the kind's
     module)."""
