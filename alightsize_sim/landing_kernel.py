@@ -834,12 +834,13 @@ def _accept(S, T, W, H, y, t, h_acc, forced):
     # A massless footpad's slide does not stop in a step of event_tol or less: where its last slide ended its push
     # sits at the dynamic limit, so such a step (an event at its start) reads it as stopped, and two slides then
     # restarted each other at one instant. It stops in the first longer step that finds its push below the limit.
+    # Not so a footpad that has just touched down (FRESH), which slides on mu_D only until its first commit.
     short = h_acc <= ctl[C_EVENTTOL] and slides_by_position(S.mu, contact, sliding)
     before = sliding.copy() if short else sliding
     changed = _apply(S, W, y, T.g1, forced)
     if short:
         for i in range(n):
-            if contact[i] and before[i] == 1 and sliding[i] == 0:
+            if contact[i] and armed[i] != FRESH and before[i] == 1 and sliding[i] == 0:
                 sliding[i] = 1
     k = cnt[K_HIST]                                # record as committed (a switching leg: before it)
     if k > 0 and t <= H.t[k - 1]:
