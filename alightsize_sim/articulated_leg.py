@@ -31,7 +31,7 @@ from numba import njit
 from .articulated_cells import lower_deflection, lower_lever, return_spring_force, upper_length, upper_lever
 from .articulated_kinematics import ArticulatedGeometry, _sin_psi, footpad, nearest_root
 from .articulated_statics import ground_components
-from .crush_cell import CellModel
+from .crush_cell import CellModel, permanent_set
 from .terrain import clearance
 from .telescoping_leg import cell_force
 from .vec3 import cross, mtv, mv
@@ -156,6 +156,24 @@ def lift_shape(geo, cells, i, mem, alpha, beta, psi, main, r, R):
     if clearance(geo[9], tip[0], tip[1], tip[2]) >= 0.0:
         return 0.0, beta, psi
     return alpha, beta, psi
+
+
+@njit(cache=True)
+def at_set(geo, cells, i, mem, shape):
+    """Free shape with the upper cell at least at its permanent set: psi raised (Newton on eq. 46, d Delta_1 / d psi =
+    AU upper_lever) where a leg that left the grazing band short of its set is caught on a vertical face, so that it
+    does not leave through the band at once."""
+    g = geometry(geo[8], i)
+    target = geo[8][i, N_ART - 1] + permanent_set(cells[3][i, 0], mem[0, 0], mem[0, 1])
+    psi = shape[2]
+    if upper_length(g, psi) >= target:
+        return shape[0], shape[1], psi
+    for _ in range(50):
+        gap = target - upper_length(g, psi)
+        if abs(gap) <= 1e-12 * target:
+            break
+        psi += gap / (g.AU * upper_lever(g, psi))
+    return shape[0], shape[1], psi
 
 
 @njit(cache=True)

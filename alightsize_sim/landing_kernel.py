@@ -27,7 +27,7 @@ from .footpad_mass import (FACE, FLOOR, STARTED, ground_event, integrates_damper
 from .footpad_slip import contact_force, slides_by_position, slip_events
 from .rigid_body import free_flight, quat_matrix, quat_rate
 from .stability import hanging_margin, quiescence_momenta, quiescence_update, stable_by_energy, tipping_margins
-from .legs import TELESCOPING, folded, free_footpad, leg_force, lift_shape, member_strike, slack
+from .legs import TELESCOPING, at_set, folded, free_footpad, leg_force, lift_shape, member_strike, slack
 from .telescoping_leg import aim
 from .terrain import clearance
 from .vec3 import cross, mtv, mv
@@ -424,9 +424,11 @@ def _switch(S, y, which, W):
         # default event_tol and band): still above it, it met a face at the surface.
         band = S.ctl[C_BAND]
         on_face = pad[2] - top > (-0.5 * band if locked else FACE_GAP)
-        if on_face and geo[7][which] == TELESCOPING and shape[which, 2] < 0.0:
-            shape[which, 2] = 0.0       # one that left short of its set is caught at its set, the band from leaving
-            pad = free_footpad(geo, cells, which, mem[which], shape[which], y[0:3], R)
+        if on_face:             # one that left short of its set is caught at its set, the band from leaving
+            caught = at_set(geo, cells, which, mem[which], shape[which])
+            if caught[2] != shape[which, 2]:
+                shape[which, 0], shape[which, 1], shape[which, 2] = caught
+                pad = free_footpad(geo, cells, which, mem[which], shape[which], y[0:3], R)
         P[which, 0], P[which, 1], P[which, 2] = pad[0], pad[1], pad[2] if on_face else top
         contact[which] = 1
         sliding[which] = FACE if on_face else 1                 # (re)contact slides on mu_D (eq. 33)
@@ -834,7 +836,17 @@ def _accept(S, T, W, H, y, t, h_acc, forced):
     for c in range(6, 10):
         y[c] /= qn
     cnt[K_STEPS] += 1
+    # A massless footpad's slide does not stop in a step of event_tol or less: where its last slide ended its push
+    # sits at the dynamic limit, so such a step (an event at its start) reads it as stopped, and two slides then
+    # restarted each other at one instant. It stops in the first longer step that finds its push below the limit.
+    # Not so a footpad that has just touched down (FRESH), which slides on mu_D only until its first commit.
+    short = h_acc <= ctl[C_EVENTTOL] and slides_by_position(S.mu, contact, sliding)
+    before = sliding.copy() if short else sliding
     changed = _apply(S, W, y, T.g1, forced)
+    if short:
+        for i in range(n):
+            if contact[i] and armed[i] != FRESH and before[i] == 1 and sliding[i] == 0:
+                sliding[i] = 1
     k = cnt[K_HIST]                                # record as committed (a switching leg: before it)
     if k > 0 and t <= H.t[k - 1]:
         k -= 1                                     # an event at the start of a step replaces its record

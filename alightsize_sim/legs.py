@@ -197,6 +197,26 @@ def _free_footpad(geo, cells, i, mem, shape, r, R):
     return _pick(geo, _mixed_footpad, "free_footpad")
 
 
+def at_set(geo, cells, i, mem, shape):
+    """A free leg's shape with its main cell at least at its permanent set (see the kind's module)."""
+    return MODULES[_kind(geo, i)].at_set(geo, cells, i, mem, shape)
+
+
+def _mixed_at_set(tel, art, tri):
+    def mixed(geo, cells, i, mem, shape):
+        if geo[7][i] == ARTICULATED:
+            return art(geo, cells, i, mem, shape)
+        if geo[7][i] == TRIPOD:
+            return tri(geo, cells, i, mem, shape)
+        return tel(geo, cells, i, mem, shape)
+    return mixed
+
+
+@overload(at_set)
+def _at_set(geo, cells, i, mem, shape):
+    return _pick(geo, _mixed_at_set, "at_set")
+
+
 def lift_shape(geo, cells, i, mem, alpha, beta, psi, main, r, R):
     """Stored free geometry of a leg lifting off with the given shape and main-cell deflection (see the kind's
     module)."""

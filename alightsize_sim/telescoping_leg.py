@@ -151,6 +151,13 @@ def aim(geo, cells, i, mem, T, r, R):
 
 
 @njit(cache=True)
+def at_set(geo, cells, i, mem, shape):
+    """Free shape with the axial cell at least at its permanent set (no compression short of it held): a leg that left
+    the grazing band short of its set is caught on a vertical face at its set, so that it does not leave at once."""
+    return shape[0], shape[1], max(shape[2], 0.0)
+
+
+@njit(cache=True)
 def lift_shape(geo, cells, i, mem, alpha, beta, psi, main, r, R):
     """Stored free geometry of a leg lifting off at tilt (alpha, beta) with axial deflection `main` (psi, r, R unused:
     the articulated leg's interface): the tilt and the compression beyond its set it still held, so that its free

@@ -477,6 +477,13 @@ def lift_shape(geo, cells, i, mem, alpha, beta, psi, main, r, R):
 
 
 @njit(cache=True)
+def at_set(geo, cells, i, mem, shape):
+    """A free tripod leg is caught on a vertical face with its stored strut lengths: it lifts off at zero normal
+    push (`slack`), never short of a set within the grazing band (the other kinds' interface)."""
+    return shape[0], shape[1], shape[2]
+
+
+@njit(cache=True)
 def slack(geo, cells, i, mem, defl, X, P, R):
     """The ground's normal push on tripod leg i's footpad over its primary's unloading rate (m): the leg lifts off
     where it falls through zero, the footpad pulled off the terrain (the surface's normal under P, terrain.relief;

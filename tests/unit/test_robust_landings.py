@@ -4,11 +4,13 @@ outcome and the energy audit: work in = work out (kinetic and potential energy a
 what is left), closed within 1e-4 of the energy in; the integration error at these tolerances is 1e-6 to 1e-5
 (docs/notes/simulator-log.md), so 1e-4 fails only on a term the audit does not account for."""
 
+import dataclasses
 import importlib.util
 
 import pytest
 
 from alightsize.common.resources import data_dir
+from alightsize.landings.random_landings import random_landing
 from alightsize.model.scene_config import read_scene
 from alightsize.pipeline.lander import read_lander
 from alightsize_sim.landing import simulate
@@ -52,13 +54,42 @@ def test_free_play_axial_cell_with_footpad_mass_lands():
         _lands(cfg)
 
 
+def test_slides_stopped_by_an_empty_step_land():
+    """Landing 870 of the configuration-1 sweep (benchmarks/random_scenes.py, seed 20261121; massless footpads,
+    mu_D 0.70): legs 1 and 3 slid at their dynamic limit; an event at a step's start stopped both where their
+    slides had ended, and each one's restart stopped the other's at t = 0.4995 s until the step size collapsed.
+    It comes to rest (quiescence)."""
+    cfg = read_scene(EXAMPLES / "affdl-tr-66-33" / "scenes" / "telescoping_config1.toml")
+    scene = random_landing(cfg.scene, 20261121, 870)
+    res = _lands(dataclasses.replace(cfg, scene=scene, controls=dataclasses.replace(cfg.controls, t_final=1.0)))
+    assert res.status == "quiet"
+
+
+def _sweep():
+    spec = importlib.util.spec_from_file_location("random_scenes", ROOT / "benchmarks" / "random_scenes.py")
+    sweep = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(sweep)
+    return sweep
+
+
+@pytest.mark.skipif(ROOT is None, reason="needs the repository's benchmarks/")
+@pytest.mark.parametrize("k", [673, 1403, 1150, 549, 933])
+def test_mixed_landings_that_failed_land(k):
+    """Articulated landings of the mixed sweep that failed, run to 1 s: 673 (massless, 0.38 m/s^2, two rocks or
+    steps: slides stopped by an empty step, then a leg caught on a step's face short of its set leaving at once),
+    1403 and 1150 (massless, 2.5 and 8e-6 m/s^2), 549 (11 kg footpads on regolith, 2e-5 m/s^2), 933 (18 kg
+    footpads, 8.1 m/s^2)."""
+    r = _sweep().one(k, 1.0, former=False)
+    assert r["kind"] == "articulated_1966"
+    assert r["status"] != "failed" and r["finite"], f"landing {k}: {r}"
+    assert r["closure_rel"] < CLOSURE
+
+
 @pytest.mark.skipif(ROOT is None, reason="needs the repository's benchmarks/")
 def test_seeded_mixed_landings_never_fail():
     """24 landings of the mixed sweep (leg kinds, footpad masses, soils, rocks and steps, gravity, drawn cell
     curves), 0.3 s each."""
-    spec = importlib.util.spec_from_file_location("random_scenes", ROOT / "benchmarks" / "random_scenes.py")
-    sweep = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(sweep)
+    sweep = _sweep()
     for k in range(24):
         r = sweep.one(k, 0.3, former=False)
         assert r["status"] != "failed" and r["finite"], f"landing {k}: {r}"
