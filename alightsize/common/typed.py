@@ -168,8 +168,10 @@ def input_error(exc: ValidationError, data: Any, file: str, path: str = "") -> I
     elif kind == "literal_error":
         expected, found = "one of " + ctx["expected"].replace(" or ", ", "), repr(err["input"])
     elif kind == "union_tag_invalid":
-        parts.append(ctx["discriminator"].strip("'").removesuffix("()"))
-        expected, found = "one of " + ctx["expected_tags"], repr(ctx["tag"])
+        tag = ctx["discriminator"].strip("'").removesuffix("()")
+        parts.append(tag)
+        value = err["input"].get(tag, ctx["tag"]) if isinstance(err["input"], dict) else ctx["tag"]
+        expected, found = "one of " + ctx["expected_tags"], repr(value) if isinstance(value, str) else _describe(value)
     elif kind == "union_tag_not_found":
         tag = ctx["discriminator"].strip("'").removesuffix("()")
         written = _close(tag, err["input"]) if isinstance(err["input"], dict) else None
