@@ -324,7 +324,7 @@ def read_study(path: str | Path) -> Study:
     """Read a study (StudyFile), then its scenes and run table and the runs they make; problems are InputErrors
     naming the file and key path."""
     path = Path(path)
-    t = validate(StudyFile, load_toml(path).data, path)
+    t = validate(StudyFile, load_toml(path).data, str(path))
     head = t.study
     scenes = {k: path.parent / v for k, v in t.scenes.items()}
     for k, f in scenes.items():
