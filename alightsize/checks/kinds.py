@@ -135,7 +135,7 @@ class _Moment(_Check):
                 raise refuse("this key to be present", "nothing", "moment_arm")
             if isinstance(force, tuple) and not (isinstance(arm, tuple) and len(arm) == len(force)):
                 raise refuse(f"an array of {len(force)} lengths, one per moment_force",
-                             repr(arm if not isinstance(arm, tuple) else list(arm)), "moment_arm")
+                             f"{len(arm)} lengths" if isinstance(arm, tuple) else "one length", "moment_arm")
             if not isinstance(force, tuple) and isinstance(arm, tuple):
                 raise refuse("a length", "an array", "moment_arm")
         return self
