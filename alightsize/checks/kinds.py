@@ -6,13 +6,17 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from math import pi, sqrt
-from typing import Callable
+from typing import Annotated, Any, Callable, Literal
+
+from pydantic import PlainValidator, RootModel, ValidationInfo, model_validator
+from pydantic_core import PydanticCustomError
 
 from alightsize.checks import plates
 
 from alightsize.checks import stress
 from alightsize.checks.rules import RULES, DEFAULT_RULES, Rules
-from alightsize.common.config import Node
+from alightsize.common.config import Node, _describe
+from alightsize.common.typed import Integer, Quantity, Sign, Table, Tagged, quantity, refuse, validate
 from alightsize.common.trace import Step
 from alightsize.model.materials import Material
 from alightsize.model.sections import Section, given
@@ -51,146 +55,336 @@ class Check:
         return KINDS[self.kind][2]
 
 
-def _p(node: Node, name: str, dim: str) -> float | None:
-    """An optional quantity: None when the key is absent (the section's value is used)."""
-    return node.quantity(name, dim, default=None)
+# ---------------------------------------------------------------- check tables (typed, chosen by `kind`)
+
+def _force(value: Any, info: ValidationInfo, sign: Sign) -> float:
+    """A force with units, or (where the item's reader allows them) an envelope reference read as a `ForceRef`."""
+    node = (info.context or {}).get("node")
+    if isinstance(value, dict) and node is not None and "force_reference" in node.context:
+        return node.context["force_reference"](node, info.field_name, value)
+    return quantity(value, "force", sign)
 
 
-# ---------------------------------------------------------------- parameter readers
+def _forces(value: Any, info: ValidationInfo) -> tuple[float, ...]:
+    if not isinstance(value, list) or not value:
+        raise refuse("a non-empty array of quantities", repr(value))
+    out = []
+    for i, v in enumerate(value):
+        try:
+            out.append(_force(v, info, "any"))
+        except PydanticCustomError as exc:
+            raise refuse((exc.context or {})["expected"], _describe(v), f"[{i}]") from None
+    return tuple(out)
 
-def _read_load(node: Node, rules: Rules) -> dict:
+
+def _force_or_forces(value: Any, info: ValidationInfo) -> float | tuple[float, ...]:
+    return _forces(value, info) if isinstance(value, list) else _force(value, info, "any")
+
+
+def _lengths_or_length(value: Any) -> float | tuple[float, ...]:
+    if not isinstance(value, list):
+        return quantity(value, "length", "positive")
+    out = []
+    for i, v in enumerate(value):
+        try:
+            out.append(quantity(v, "length", "positive"))
+        except PydanticCustomError as exc:
+            raise refuse((exc.context or {})["expected"], _describe(v), f"[{i}]") from None
+    return tuple(out)
+
+
+Force = Annotated[float, PlainValidator(lambda v, info: _force(v, info, "any"))]
+PositiveForce = Annotated[float, PlainValidator(lambda v, info: _force(v, info, "positive"))]
+Forces = Annotated[tuple[float, ...], PlainValidator(_forces)]
+Length = Annotated[float, Quantity("length")]
+Plate = Literal["app_iv", "tresca", "von_mises"]
+
+
+class _Check(Table):
+    note: str = ""
+
+
+class _Loaded(_Check):
+    load: Force
+
+
+class _Moment(_Check):
+    """A moment given directly, or as force x arm; arrays of forces and arms (same length) for a bound."""
+
+    moment: Annotated[float, Quantity("moment", "any")] | None = None
+    moment_force: Annotated[float | tuple[float, ...], PlainValidator(_force_or_forces)] | None = None
+    moment_arm: Annotated[float | tuple[float, ...], PlainValidator(_lengths_or_length)] | None = None
+
+    def _moment_required(self) -> bool:
+        return True
+
+    @model_validator(mode="after")
+    def _one_moment(self):
+        force, arm = self.moment_force, self.moment_arm
+        if self.moment is not None and (force is not None or arm is not None):
+            raise refuse("a moment or moment_force and moment_arm, not both", "moment and "
+                         + ("moment_force" if force is not None else "moment_arm"),
+                         "moment_force" if force is not None else "moment_arm")
+        if self.moment is None and force is None:
+            if arm is not None:
+                raise refuse("moment_arm only with moment_force", "no moment_force", "moment_arm")
+            if self._moment_required():
+                raise refuse("a moment (\"16150 lbf*in\") or moment_force and moment_arm", "neither", "moment")
+        if force is not None:
+            if arm is None:
+                raise refuse("this key to be present", "nothing", "moment_arm")
+            if isinstance(force, tuple) and not (isinstance(arm, tuple) and len(arm) == len(force)):
+                raise refuse(f"an array of {len(force)} lengths, one per moment_force",
+                             f"{len(arm)} lengths" if isinstance(arm, tuple) else "one length", "moment_arm")
+            if not isinstance(force, tuple) and isinstance(arm, tuple):
+                raise refuse("a length", "an array", "moment_arm")
+        return self
+
+    def moment_params(self) -> dict:
+        if self.moment is not None:
+            return {"M": self.moment}
+        return {"Mf": self.moment_force, "arm": self.moment_arm}
+
+
+class Compression(_Loaded):
+    kind: Literal["compression"]
+
+
+class Tension(_Loaded):
+    kind: Literal["tension"]
+
+
+class Bending(_Moment):
+    kind: Literal["bending"]
+
+
+class Combined(_Moment):
+    kind: Literal["combined"]
+    load: Force
+
+
+class ColumnBuckling(_Loaded):
+    kind: Literal["column_buckling"]
+    length: Length
+    formula: Literal["euler", "johnson_euler"] | None = None
+
+
+class LocalBuckling(_Moment):
+    kind: Literal["local_buckling"]
+    load: Force
+    wall: Length | None = None
+    formula: Literal["app_iv", "sp8007"] | None = None
+
+    def _moment_required(self) -> bool:
+        return False
+
+
+class Bearing(_Check):
+    kind: Literal["bearing"]
+    loads: Forces
+    combine: Literal["resultant", "sum"] = "resultant"
+    diameter: Length | None = None
+    bearing_length: Length
+    material: str | None = None
+
+
+class PinDoubleShear(_Check):
+    kind: Literal["pin_double_shear"]
+    loads: Forces
+    diameter: Length | None = None
+    planes: Annotated[int, Integer(1)] = 2
+
+
+class PinShear(_Check):
+    kind: Literal["pin_shear"]
+    loads: Forces
+    allowable_load: PositiveForce
+
+
+class RingBending(_Loaded):
+    kind: Literal["ring_bending"]
+    span: Length
+
+
+class ConeTension(_Loaded):
+    kind: Literal["cone_tension"]
+    thickness: Length
+
+
+class _Thick(_Check):
+    accept_thick_plate: bool = False
+
+
+class _PlateLoad(_Thick):
+    """A load W over a circle of radius r0 on a plate; the plate's radius and thickness default to the section's."""
+
+    load: PositiveForce
+    load_radius: Length
+    radius: Length | None = None
+    thickness: Length | None = None
+    theory: Plate | None = None
+    equivalent_radius: bool | None = None
+
+
+class PlateFixedCenterLoad(_PlateLoad):
+    kind: Literal["plate_fixed_center_load"]
+
+
+class PlateSupportedCenterLoad(_PlateLoad):
+    kind: Literal["plate_supported_center_load"]
+
+
+class PlateFixedMoment(_PlateLoad, _Moment):
+    kind: Literal["plate_fixed_center_moment_and_load"]
+    formula: Literal["thin_plate", "app_iv"] | None = None
+    pi_squared: bool = False
+
+
+class PlateSupportedMoment(_PlateLoad, _Moment):
+    kind: Literal["plate_supported_center_moment_and_load"]
+    formula: Literal["thin_plate"] | None = None
+
+
+class _Annular(_Thick):
+    pressure: Annotated[float, Quantity("stress")]
+    radius: Length | None = None
+    inner_radius: Length | None = None
+    thickness: Length | None = None
+
+
+class AnnularOuterSupported(_Annular):
+    kind: Literal["plate_annular_outer_supported_uniform_pressure"]
+
+
+class AnnularOuterFixed(_Annular):
+    kind: Literal["plate_annular_outer_fixed_uniform_pressure"]
+
+
+class AnnularInnerSupported(_Annular):
+    kind: Literal["plate_annular_inner_supported_uniform_pressure"]
+
+
+class AnnularInnerFixed(_Annular):
+    kind: Literal["plate_annular_inner_fixed_uniform_pressure"]
+
+
+class PlateEccentric(_PlateLoad):
+    kind: Literal["plate_supported_eccentric_and_distributed"]
+    formula: Literal["thin_plate", "app_iv"] | None = None
+    radius_tangential: Length | None = None
+    distributed_load: PositiveForce
+    load_offset: Length
+
+
+class CheckTable(RootModel):
+    """An `[[item.check]]` table: the table of its `kind`."""
+
+    root: Tagged("kind", None, Compression, Tension, Bending, Combined,  # type: ignore[valid-type]
+                 ColumnBuckling, LocalBuckling, Bearing, PinShear, PinDoubleShear, RingBending, ConeTension,
+                 PlateFixedCenterLoad, PlateSupportedCenterLoad, PlateFixedMoment, PlateSupportedMoment,
+                 AnnularOuterSupported, AnnularOuterFixed, AnnularInnerSupported, AnnularInnerFixed, PlateEccentric)
+
+
+# ---------------------------------------------------------------- the checks' parameters (SI) from their tables
+
+def _load(t, rules: Rules, node: Node) -> dict:
     """An axial load of either sign (tension or compression): the checks use its magnitude."""
-    return {"P": node.quantity("load", "force", positive=False)}
+    return {"P": t.load}
 
 
-def _read_moment(node: Node, rules: Rules) -> dict:
-    """A moment given directly, or as force x arm (M = P l, App. IV); either sign (the worst fibre is taken).
-    Arrays of forces and arms (same length) give the bound M = sum |P_i| l_i of moments whose vectors may add."""
-    if node.has("moment"):
-        return {"M": node.quantity("moment", "moment", positive=False)}
-    if node.has("moment_force"):
-        if not isinstance(node.raw("moment_force"), list):
-            return {"Mf": node.quantity("moment_force", "force", positive=False),
-                    "arm": node.quantity("moment_arm", "length")}
-        forces, arms = _list(node, "moment_force"), node.raw("moment_arm")
-        if not isinstance(arms, list) or len(arms) != len(forces):
-            raise node.error("moment_arm", f"an array of {len(forces)} lengths, one per moment_force",
-                             repr(arms))
-        return {"Mf": tuple(node.parse_quantity("moment_force", f, "force", positive=False) for f in forces),
-                "arm": tuple(node.parse_quantity("moment_arm", a, "length") for a in arms)}
-    raise node.error("moment", "a moment (\"16150 lbf*in\") or moment_force and moment_arm", "neither")
+def _moment_of(t, rules: Rules, node: Node) -> dict:
+    """M, or force x arm (M = P l, App. IV; either sign, the worst fibre is taken); arrays give the bound
+    M = sum |P_i| l_i of moments whose vectors may add."""
+    return t.moment_params()
 
 
-def _read_axial_and_moment(node: Node, rules: Rules) -> dict:
-    return {**_read_load(node, rules), **_read_moment(node, rules)}
+def _axial_and_moment(t, rules: Rules, node: Node) -> dict:
+    return {"P": t.load, **t.moment_params()}
 
 
-def _read_buckling(node: Node, rules: Rules) -> dict:
+def _buckling(t, rules: Rules, node: Node) -> dict:
     """`formula`: "euler" (App. IV's lines) or "johnson_euler" (Bruhn's); either way Johnson's parabola below the
     transition slenderness, where Euler's formula does not hold."""
-    return {**_read_load(node, rules), "L": node.quantity("length", "length"),
-            "formula": node.string("formula", rules.column, choices=("euler", "johnson_euler"))}
+    return {"P": t.load, "L": t.length, "formula": t.formula or rules.column}
 
 
-def _read_local(node: Node, rules: Rules) -> dict:
-    out = _read_load(node, rules)
-    if node.has("moment") or node.has("moment_force"):
-        out.update(_read_moment(node, rules))
-    out["t"] = _p(node, "wall", "length")
-    out["formula"] = node.string("formula", rules.local, choices=("app_iv", "sp8007"))   # 0.4 E t / D, or SP-8007
+def _local_params(t, rules: Rules, node: Node) -> dict:
+    out = {"P": t.load}
+    if t.moment is not None or t.moment_force is not None:
+        out.update(t.moment_params())
+    out["t"] = t.wall
+    out["formula"] = t.formula or rules.local            # 0.4 E t / D, or SP-8007
     return out
 
 
-def _read_bearing(node: Node, rules: Rules) -> dict:
+def _bearing_params(t, rules: Rules, node: Node) -> dict:
     """`combine`: "resultant" of orthogonal components (default) or "sum" of loads pressing the same surface
     (App. IV's w1 + w2); `material`: the part the pin bears on (a lug), resolved by the item reader."""
-    comps = [node.parse_quantity("loads", v, "force", positive=False) for v in _list(node, "loads")]
-    return {"components": tuple(comps), "combine": node.string("combine", "resultant", choices=("resultant", "sum")),
-            "d": _p(node, "diameter", "length"), "t": node.quantity("bearing_length", "length"),
-            "material": node.string("material", None)}
+    return {"components": t.loads, "combine": t.combine, "d": t.diameter, "t": t.bearing_length,
+            "material": t.material}
 
 
-def _read_double_shear(node: Node, rules: Rules) -> dict:
-    comps = [node.parse_quantity("loads", v, "force", positive=False) for v in _list(node, "loads")]
-    return {"components": tuple(comps), "d": _p(node, "diameter", "length"),
-            "planes": node.integer("planes", 2, minimum=1)}
+def _double_shear_params(t, rules: Rules, node: Node) -> dict:
+    return {"components": t.loads, "d": t.diameter, "planes": t.planes}
 
 
-def _read_pin(node: Node, rules: Rules) -> dict:
-    comps = [node.parse_quantity("loads", v, "force", positive=False) for v in _list(node, "loads")]
-    return {"components": tuple(comps), "allowable_load": node.quantity("allowable_load", "force")}
+def _pin_params(t, rules: Rules, node: Node) -> dict:
+    return {"components": t.loads, "allowable_load": t.allowable_load}
 
 
-def _read_ring(node: Node, rules: Rules) -> dict:
-    return {"P": node.quantity("load", "force", positive=False), "span": node.quantity("span", "length")}
+def _ring_params(t, rules: Rules, node: Node) -> dict:
+    return {"P": t.load, "span": t.span}
 
 
-def _read_cone(node: Node, rules: Rules) -> dict:
-    return {"P": node.quantity("load", "force", positive=False), "t": node.quantity("thickness", "length")}
+def _cone_params(t, rules: Rules, node: Node) -> dict:
+    return {"P": t.load, "t": t.thickness}
 
 
-def _read_theory(node: Node, rules: Rules) -> dict:
+def _theory(t, rules: Rules) -> dict:
     """`theory`: "app_iv" (|sigma_r + sigma_t|/2 against Fcy/2), "tresca" or "von_mises" (principal stresses,
     sigma_z = 0, against Fcy); `equivalent_radius`: Roark's r0' for a load circle r0 < 0.5 t; with
     `accept_thick_plate` the thin-plate range is not enforced."""
-    return {"theory": node.string("theory", rules.plate, choices=("app_iv", "tresca", "von_mises")),
-            "r0_equivalent": node.boolean("equivalent_radius", rules.equivalent_radius), **_read_thick(node)}
+    return {"theory": t.theory or rules.plate,
+            "r0_equivalent": rules.equivalent_radius if t.equivalent_radius is None else t.equivalent_radius,
+            "thick": t.accept_thick_plate}
 
 
-def _read_thick(node: Node) -> dict:
-    """`accept_thick_plate`: apply thin-plate formulas to a plate thicker than their range, as App. IV does."""
-    return {"thick": node.boolean("accept_thick_plate", False)}
+def _plate_params(t, rules: Rules, node: Node) -> dict:
+    return {"W": t.load, "r0": t.load_radius, "a": t.radius, "t": t.thickness, **_theory(t, rules)}
 
 
-def _read_plate(node: Node, rules: Rules) -> dict:
-    return {"W": node.quantity("load", "force"), "r0": node.quantity("load_radius", "length"),
-            "a": _p(node, "radius", "length"), "t": _p(node, "thickness", "length"), **_read_theory(node, rules)}
-
-
-def _read_plate_moment(edge: str) -> Callable[[Node, Rules], dict]:
+def _plate_moment_params(edge: str) -> Callable[[Any, Rules, Node], dict]:
     """A couple through a rigid hub of radius `load_radius` plus the load over it; outer edge `edge`. `formula`:
     "thin_plate", or "app_iv" (Roark 1954 p. 197, fixed edge only; `pi_squared` with it)."""
-    def read(node: Node, rules: Rules) -> dict:
+    def params(t, rules: Rules, node: Node) -> dict:
         choices = ("thin_plate", "app_iv") if edge == "fixed" else ("thin_plate",)
-        formula = node.string("formula", rules.plate_formula if rules.plate_formula in choices else "thin_plate",
-                              choices=choices)
-        squared = node.boolean("pi_squared", False) if edge == "fixed" else False
+        formula = t.formula or (rules.plate_formula if rules.plate_formula in choices else "thin_plate")
+        squared = t.pi_squared if edge == "fixed" else False
         if squared and formula != "app_iv":
             raise node.error("pi_squared", 'pi_squared only with formula = "app_iv" (the 1954 hub formula)',
                              f"formula = {formula!r}")
-        return {**_read_plate(node, rules), **_read_moment(node, rules), "edge": edge, "formula": formula,
+        return {**_plate_params(t, rules, node), **t.moment_params(), "edge": edge, "formula": formula,
                 "pi_squared": squared}
-    return read
+    return params
 
 
-def _read_annular(outer: str, inner: str) -> Callable[[Node, Rules], dict]:
+def _annular_params(outer: str, inner: str) -> Callable[[Any, Rules, Node], dict]:
     """An annular plate under uniform pressure, its outer and inner edge `outer` and `inner`."""
-    def read(node: Node, rules: Rules) -> dict:
-        return {"q": node.quantity("pressure", "stress"), "a": _p(node, "radius", "length"),
-                "b": _p(node, "inner_radius", "length"), "t": _p(node, "thickness", "length"),
-                "outer": outer, "inner": inner, **_read_thick(node)}
-    return read
+    def params(t, rules: Rules, node: Node) -> dict:
+        return {"q": t.pressure, "a": t.radius, "b": t.inner_radius, "t": t.thickness, "outer": outer,
+                "inner": inner, "thick": t.accept_thick_plate}
+    return params
 
 
-def _read_eccentric(node: Node, rules: Rules) -> dict:
+def _eccentric_params(t, rules: Rules, node: Node) -> dict:
     """`formula`: "thin_plate" or "app_iv" (App. IV's load on a plate of radius a - p); `radius_tangential` only
     with "app_iv" (it reproduces a printed radius)."""
-    formula = node.string("formula", rules.plate_formula, choices=("thin_plate", "app_iv"))
-    a_t = _p(node, "radius_tangential", "length")
-    if a_t is not None and formula != "app_iv":
+    formula = t.formula or rules.plate_formula
+    if t.radius_tangential is not None and formula != "app_iv":
         raise node.error("radius_tangential", 'radius_tangential only with formula = "app_iv" (it reproduces the '
                          "radius App. IV printed)", f"formula = {formula!r}")
-    return {"W": node.quantity("load", "force"), "W_total": node.quantity("distributed_load", "force"),
-            "p": node.quantity("load_offset", "length"), "r0": node.quantity("load_radius", "length"),
-            "a": _p(node, "radius", "length"), "a_t": a_t, "formula": formula,
-            "t": _p(node, "thickness", "length"), **_read_theory(node, rules)}
-
-
-def _list(node: Node, name: str) -> list:
-    value = node.raw(name)
-    if not isinstance(value, list) or not value:
-        raise node.error(name, "a non-empty array of quantities", repr(value))
-    return value
+    return {"W": t.load, "W_total": t.distributed_load, "p": t.load_offset, "r0": t.load_radius, "a": t.radius,
+            "a_t": t.radius_tangential, "formula": formula, "t": t.thickness, **_theory(t, rules)}
 
 
 # ---------------------------------------------------------------- evaluators
@@ -654,35 +848,36 @@ def _plate_eccentric(p, s, mat) -> Outcome:
     return _shear_outcome([("at the load", sr, st)], p["W"], mat, steps, p["theory"])
 
 
-# kind -> (reader of config parameters, evaluator, material properties it needs)
-Reader = Callable[[Node, Rules], dict]
+# kind -> (parameters from its table, evaluator, material properties it needs)
+Reader = Callable[[Any, Rules, Node], dict]
 Evaluator = Callable[[dict, Section | None, Material], Outcome]      # section None: an item without one
 KINDS: dict[str, tuple[Reader, Evaluator, tuple[str, ...]]] = {
-    "compression": (_read_load, _compression, ("yield_strength",)),
-    "tension": (_read_load, _tension, ("yield_strength",)),
-    "bending": (_read_moment, _bending, ("yield_strength",)),
-    "combined": (_read_axial_and_moment, _combined, ("yield_strength",)),
-    "column_buckling": (_read_buckling, _column, ("elastic_modulus", "yield_strength")),
-    "local_buckling": (_read_local, _local, ("elastic_modulus", "yield_strength", "poisson_m")),
-    "bearing": (_read_bearing, _bearing, ("yield_strength",)),
-    "pin_shear": (_read_pin, _pin, ()),
-    "pin_double_shear": (_read_double_shear, _double_shear, ("yield_strength",)),
-    "ring_bending": (_read_ring, _ring, ("yield_strength",)),
-    "cone_tension": (_read_cone, _cone, ("yield_strength",)),
-    "plate_fixed_center_load": (_read_plate, _plate_center("fixed"), ("yield_strength", "poisson_m")),
-    "plate_supported_center_load": (_read_plate, _plate_center("supported"), ("yield_strength", "poisson_m")),
-    "plate_fixed_center_moment_and_load": (_read_plate_moment("fixed"), _plate_moment, ("yield_strength", "poisson_m")),
-    "plate_supported_center_moment_and_load": (_read_plate_moment("supported"), _plate_moment,
+    "compression": (_load, _compression, ("yield_strength",)),
+    "tension": (_load, _tension, ("yield_strength",)),
+    "bending": (_moment_of, _bending, ("yield_strength",)),
+    "combined": (_axial_and_moment, _combined, ("yield_strength",)),
+    "column_buckling": (_buckling, _column, ("elastic_modulus", "yield_strength")),
+    "local_buckling": (_local_params, _local, ("elastic_modulus", "yield_strength", "poisson_m")),
+    "bearing": (_bearing_params, _bearing, ("yield_strength",)),
+    "pin_shear": (_pin_params, _pin, ()),
+    "pin_double_shear": (_double_shear_params, _double_shear, ("yield_strength",)),
+    "ring_bending": (_ring_params, _ring, ("yield_strength",)),
+    "cone_tension": (_cone_params, _cone, ("yield_strength",)),
+    "plate_fixed_center_load": (_plate_params, _plate_center("fixed"), ("yield_strength", "poisson_m")),
+    "plate_supported_center_load": (_plate_params, _plate_center("supported"), ("yield_strength", "poisson_m")),
+    "plate_fixed_center_moment_and_load": (_plate_moment_params("fixed"), _plate_moment,
+                                           ("yield_strength", "poisson_m")),
+    "plate_supported_center_moment_and_load": (_plate_moment_params("supported"), _plate_moment,
                                                ("yield_strength", "poisson_m")),
-    "plate_annular_outer_supported_uniform_pressure": (_read_annular("supported", "free"), _plate_annular,
+    "plate_annular_outer_supported_uniform_pressure": (_annular_params("supported", "free"), _plate_annular,
                                                        ("yield_strength", "poisson_m")),
-    "plate_annular_outer_fixed_uniform_pressure": (_read_annular("fixed", "free"), _plate_annular,
+    "plate_annular_outer_fixed_uniform_pressure": (_annular_params("fixed", "free"), _plate_annular,
                                                    ("yield_strength", "poisson_m")),
-    "plate_annular_inner_supported_uniform_pressure": (_read_annular("free", "supported"), _plate_annular,
+    "plate_annular_inner_supported_uniform_pressure": (_annular_params("free", "supported"), _plate_annular,
                                                        ("yield_strength", "poisson_m")),
-    "plate_annular_inner_fixed_uniform_pressure": (_read_annular("free", "fixed"), _plate_annular,
+    "plate_annular_inner_fixed_uniform_pressure": (_annular_params("free", "fixed"), _plate_annular,
                                                    ("yield_strength", "poisson_m")),
-    "plate_supported_eccentric_and_distributed": (_read_eccentric, _plate_eccentric, ("yield_strength", "poisson_m")),
+    "plate_supported_eccentric_and_distributed": (_eccentric_params, _plate_eccentric, ("yield_strength", "poisson_m")),
 }
 # retired kind -> what to write instead
 RETIRED = {"plate_annular_uniform_pressure": (
@@ -744,14 +939,12 @@ def out_of_range(check: Check, section: Section | None, material: Material) -> t
 
 
 def read_check(node: Node, rules: Rules = RULES[DEFAULT_RULES]) -> Check:
-    """A check table; keys it does not give take their formula from `rules`."""
+    """A check table (CheckTable, chosen by `kind`); keys it does not give take their formula from `rules`."""
     retired = node.raw("kind", None)
     if isinstance(retired, str) and retired in RETIRED:
         raise node.error("kind", *RETIRED[retired])
-    kind = node.string("kind", choices=tuple(KINDS))
-    params = KINDS[kind][0](node, rules)
-    note = node.string("note", "")
-    node.finish()
-    replaces = {key: dim for key, dim in STANDS_IN.get(kind, {}).items() if node.has(key)}
-    return Check(kind, params, node.path, note, replaces)
+    t = validate(CheckTable, node.data, node.file, node.path, node=node).root
+    params = KINDS[t.kind][0](t, rules, node)
+    replaces = {key: dim for key, dim in STANDS_IN.get(t.kind, {}).items() if node.has(key)}
+    return Check(t.kind, params, node.path, t.note, replaces)
 

@@ -24,6 +24,11 @@ def _close(name: str, candidates) -> str | None:
     return found[0] if found else None
 
 
+def key_name(name: str) -> str:
+    """A key as an error names it: as written, an empty or blank one as TOML writes it ("")."""
+    return name if name.strip() else json.dumps(name)
+
+
 def _describe(value: Any) -> str:
     if isinstance(value, dict):
         return "a table"
@@ -41,8 +46,7 @@ class Node:
         self._read: set[str] = set()
 
     def key(self, name: str) -> str:
-        name = name if name.strip() else json.dumps(name)     # an empty key as TOML writes it, ""
-        return f"{self.path}.{name}" if self.path else name
+        return f"{self.path}.{key_name(name)}" if self.path else key_name(name)
 
     def set_path(self, dotted: str, value: Any) -> None:
         """Set the value at a dotted key path below this table (creating tables on the way); a last key

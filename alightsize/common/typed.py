@@ -4,14 +4,13 @@ and a validation error turned into the InputError contract: file, key path as wr
 
 from __future__ import annotations
 
-import json
 from typing import Annotated, Any, Literal, Union
 
 from pydantic import BaseModel, ConfigDict, Discriminator, PlainValidator, Tag, ValidationError, model_validator
 from pydantic_core import PydanticCustomError
 
 from alightsize.common import units
-from alightsize.common.config import _close, _describe, _unknown
+from alightsize.common.config import _close, _describe, _unknown, key_name
 from alightsize.common.errors import InputError
 
 _ERROR = "alightsize"          # the type of the errors raised here (their context carries expected and found)
@@ -135,7 +134,7 @@ def _key_path(loc: tuple, data: Any, missing: bool) -> list[str]:
     node = data
     for k, p in enumerate(loc):
         if isinstance(node, dict) and isinstance(p, str) and p in node:
-            parts.append(p if p.strip() else json.dumps(p))
+            parts.append(key_name(p))
             node = node[p]
         elif isinstance(node, list) and isinstance(p, int) and 0 <= p < len(node) and parts:
             parts[-1] += f"[{p}]"
@@ -163,14 +162,16 @@ def input_error(exc: ValidationError, data: Any, file: str, path: str = "") -> I
             if sub.startswith("[") and parts:
                 parts[-1] += sub
             else:
-                parts.append(sub if sub.strip() else json.dumps(sub))     # an empty key as TOML writes it, ""
+                parts.append(key_name(sub))
     elif kind == "missing":
         expected, found = "this key to be present", "nothing"
     elif kind == "literal_error":
         expected, found = "one of " + ctx["expected"].replace(" or ", ", "), repr(err["input"])
     elif kind == "union_tag_invalid":
-        parts.append(ctx["discriminator"].strip("'").removesuffix("()"))
-        expected, found = "one of " + ctx["expected_tags"], repr(ctx["tag"])
+        tag = ctx["discriminator"].strip("'").removesuffix("()")
+        parts.append(tag)
+        value = err["input"].get(tag, ctx["tag"]) if isinstance(err["input"], dict) else ctx["tag"]
+        expected, found = "one of " + ctx["expected_tags"], repr(value) if isinstance(value, str) else _describe(value)
     elif kind == "union_tag_not_found":
         tag = ctx["discriminator"].strip("'").removesuffix("()")
         written = _close(tag, err["input"]) if isinstance(err["input"], dict) else None

@@ -12,8 +12,7 @@ from typing import Annotated, Any, Literal
 
 from pydantic import PlainValidator
 
-from alightsize.common.config import Node
-from alightsize.common.typed import Table, refuse, validate
+from alightsize.common.typed import Table, refuse
 
 # Sec. II.A.1 (human, couch facing up): 20 g at <= 10,000 g/s vertically (body axis 3), 10 g at <= 1000 g/s
 # in the other directions; Sec. II.A.2 (instrument capsule): 50 g.
@@ -93,11 +92,6 @@ class CriteriaTable(Table):
         xdd, onset = PRESETS[self.preset] if self.preset else (None, None)
         return Criteria(self.max_xdd_g or xdd, self.max_onset_g_s or onset, self.no_bottoming, self.no_tumbling,
                         self.no_body_contact)
-
-
-def read_criteria(node: Node | None) -> Criteria | None:
-    """`[criteria]` of a Node-read file; None when absent."""
-    return None if node is None else validate(CriteriaTable, node.data, node.file, node.path).criteria()
 
 
 def violation_kinds(failed: str | None) -> list[str]:

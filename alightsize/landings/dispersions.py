@@ -16,8 +16,8 @@ import numpy as np
 from pydantic import RootModel
 from scipy.special import ndtr, ndtri
 
-from alightsize.common.config import Node
-from alightsize.common.typed import Table, Tagged, validate
+from alightsize.common.config import Node, key_name
+from alightsize.common.typed import Table, Tagged
 from alightsize.common.units import registry
 
 DISTRIBUTIONS = {"normal": ("mean", "sd"), "uniform": ("low", "high"),
@@ -88,35 +88,35 @@ class DispersionTable(RootModel):
     root: Tagged("dist", None, Normal, Uniform, TruncatedNormal)  # type: ignore[valid-type]
 
 
-def _magnitude(node: Node, key: str, value, unit: str | None) -> tuple[float, str]:
+def _magnitude(spec: Node, key: str, value, unit: str | None) -> tuple[float, str]:
     """A distribution parameter as (magnitude, unit); later parameters are converted to the first's unit."""
     if isinstance(value, (int, float)) and not isinstance(value, bool):
         if unit:
-            raise node.error(key, f"a quantity in {unit} like the first parameter", repr(value))
+            raise spec.error(key, f"a quantity in {unit} like the first parameter", repr(value))
         try:
             mag = float(value)
         except OverflowError:                          # an integer beyond any float
             mag = float("inf")
         if not np.isfinite(mag):
-            raise node.error(key, "a finite value", repr(value))
+            raise spec.error(key, "a finite value", repr(value))
         return mag, ""
     try:
         q = registry().Quantity(str(value))
         q = q.to(unit) if unit else q
     except Exception:                                  # noqa: BLE001 - pint raises many kinds
-        raise node.error(key, "a number or a quantity with a unit" + (f" convertible to {unit}" if unit else ""),
+        raise spec.error(key, "a number or a quantity with a unit" + (f" convertible to {unit}" if unit else ""),
                          repr(value)) from None
     mag = float(q.magnitude)
     if not np.isfinite(mag):
-        raise node.error(key, "a finite value", repr(value))
+        raise spec.error(key, "a finite value", repr(value))
     return mag, unit if unit is not None else ("" if str(q.units) == "dimensionless" else str(q.units))
 
 
-def read_dispersion(node: Node, key: str) -> Dispersion:
-    """One `[dispersions]` entry (DispersionTable), its parameters in the first one's unit; errors name the key
-    path."""
-    spec = node.table(key)
-    d = validate(DispersionTable, spec.data, spec.file, spec.path).root
+def dispersion(file: str, key: str, table: DispersionTable) -> Dispersion:
+    """The `[dispersions]` entry `key` (read as a DispersionTable), its parameters in the first one's unit; errors
+    name the key path."""
+    d = table.root
+    spec = Node(file, "dispersions." + key_name(key), {})
     unit, values = None, []
     for name in DISTRIBUTIONS[d.dist]:
         mag, unit = _magnitude(spec, name, getattr(d, name), unit)

@@ -28,14 +28,17 @@ import warnings
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
+from typing import Annotated, Any
 
 import numpy as np
+from pydantic import PlainValidator, model_validator
 
 from alightsize.common.version import __version__
-from alightsize.common.config import SEED_MAX, Node, is_file, load_toml
-from alightsize.landings.dispersions import Dispersion, read_dispersion
+from alightsize.common.config import SEED_MAX, Node, _describe, is_file, key_name, load_toml
+from alightsize.common.typed import Integer, Table, refuse, validate
+from alightsize.landings.dispersions import Dispersion, DispersionTable, dispersion
 from alightsize.common.errors import InputError, InputWarning
-from alightsize.landings.criteria import Criteria, read_criteria
+from alightsize.landings.criteria import Criteria, CriteriaTable
 from alightsize.landings.output import outcome
 from alightsize.model.scene_config import SceneConfig, SceneDocument, read_scene, scene_document
 from alightsize.common.units import registry
@@ -75,16 +78,112 @@ class Study:
     plot_params: tuple[str, ...]   # candidates for the boundary plot's axes, in order
 
 
-def _fill(template, row: dict, node: Node, key: str):
+class StudyHead(Table):
+    """`[study]`: name and title (default: the file's name), the Monte Carlo seed and samples."""
+
+    name: str | None = None
+    title: str | None = None
+    seed: Annotated[int, Integer(0, SEED_MAX)] | None = None
+    samples: Annotated[int, Integer(1)] | None = None
+    history: bool = False
+    note: str = ""
+
+
+class RunsTable(Table):
+    """`[runs]`: a CSV run table, its id and scene columns, the scene keys set from its columns (`set`, templates
+    "{column}") and chosen by a column's value (`choose.COLUMN.VALUE`)."""
+
+    table: str
+    id: str = "run"
+    scene: str = "scene"
+    set: dict[str, Any] = {}
+    choose: dict[str, dict[str, dict[str, Any]]] = {}
+
+
+class Compare(Table):
+    """`[compare]`: the run table's column of printed outcome classes."""
+
+    column: str
+
+
+class Matrix(Table):
+    """`[matrix]`: the outcome matrix's rows and column, the boundary plot's two axes."""
+
+    rows: list[str] | None = None
+    columns: str | None = None
+    plot: list[str] | None = None
+
+
+def _grid(value: Any) -> dict[str, list]:
+    """`[grid]`: `scene` (an array of [scenes] keys) and scene keys, each with a non-empty array of distinct
+    values."""
+    if not isinstance(value, dict):
+        raise refuse("a table")
+    for k, values in value.items():
+        if k == "scene":
+            if not isinstance(values, list) or not all(isinstance(v, str) for v in values):
+                raise refuse("an array of [scenes] keys", _describe(values), k)
+            continue
+        if not isinstance(values, list) or not values:
+            raise refuse("a non-empty array of values for this scene key", repr(values), k)
+        seen: dict[str, int] = {}
+        for i, v in enumerate(values):
+            first = seen.setdefault(json.dumps(v, sort_keys=True, default=str), i)
+            if first != i:                    # the key quoted, as TOML writes a dotted key
+                raise refuse(f"distinct values (each grid point once; [{first}] is the same)", repr(v),
+                             f"{json.dumps(k)}[{i}]")
+    return value
+
+
+class StudyFile(Table):
+    """A study file (docs/reference/study.md)."""
+
+    study: StudyHead
+    scenes: dict[str, str]
+    runs: RunsTable | None = None
+    grid: Annotated[dict[str, list], PlainValidator(_grid)] | None = None
+    dispersions: dict[str, DispersionTable] = {}
+    criteria: CriteriaTable | None = None
+    compare: Compare | None = None
+    matrix: Matrix | None = None
+
+    @model_validator(mode="after")
+    def _consistent(self):
+        head = self.study
+        if self.runs and self.grid is not None:
+            raise refuse("either a run table [runs] or a [grid]", "both", "grid")
+        if self.compare and not self.runs:
+            raise refuse("[compare] only with a run table [runs] (it names a column of the table)",
+                         "a [grid]" if self.grid is not None else "no [runs]", "compare")
+        if self.dispersions:
+            if head.seed is None:
+                raise refuse("an integer seed for the Monte Carlo dispersions", "nothing", "study.seed")
+            if head.samples is None:
+                raise refuse("the number of Monte Carlo samples (an integer >= 1)", "nothing", "study.samples")
+        else:
+            if head.seed is not None:
+                raise refuse("seed only with [dispersions] (without them nothing is drawn)", str(head.seed),
+                             "study.seed")
+            if head.samples is not None and head.samples > 1:
+                raise refuse("samples only with [dispersions] (without them every sample is the same run)",
+                             str(head.samples), "study.samples")
+        plot = self.matrix.plot if self.matrix else None
+        if plot is not None and len(plot) != 2:
+            raise refuse("two parameter names (x, y) for the boundary plot", repr(plot), "matrix.plot")
+        return self
+
+
+def _fill(template, row: dict, file: str, key: str):
     """A TOML value with "{column}" placeholders filled from the row (lists element by element)."""
     if isinstance(template, list):
-        return [_fill(t, row, node, key) for t in template]
+        return [_fill(t, row, file, key) for t in template]
     if not isinstance(template, str):
         return template
     try:
         return template.format(**row)
     except (KeyError, IndexError, ValueError) as exc:
-        raise node.error(key, "a template naming columns of the run table", f"{template!r} ({exc})") from None
+        raise InputError(file, f"runs.set.{key_name(key)}", "a template naming columns of the run table",
+                         f"{template!r} ({exc})") from None
 
 
 def _template_columns(value) -> list[str]:
@@ -94,64 +193,46 @@ def _template_columns(value) -> list[str]:
     return [f for _, f, _, _ in string.Formatter().parse(value) if f] if isinstance(value, str) else []
 
 
-def _table_points(path: Path, runs_node: Node, scenes: dict, compare: Node | None) -> list[tuple]:
+def _table_points(path: Path, runs: RunsTable, scenes: dict, compare: Compare | None) -> list[tuple]:
     """(id, scene key, overrides, params, reference) per row of the CSV run table."""
-    runs_node.allow(("table", "id", "scene", "set", "choose"))
-    table = path.parent / runs_node.string("table")
+    table = path.parent / runs.table
     if not is_file(table):
-        raise runs_node.error("table", "a CSV run table (relative to the study)", f"{str(table)!r}: no such file")
-    id_col, scene_col = runs_node.string("id", "run"), runs_node.string("scene", "scene")
-    setters = runs_node.table("set", optional=True)
-    choose = runs_node.table("choose", optional=True)
-    chooser = {col: {o: opts.table(o).data for o in opts.data}       # column -> its value -> scene overrides
-               for col, opts in ((c, choose.table(c)) for c in (choose.data if choose else ()))}
-    ref_col = compare.string("column") if compare else None
+        raise InputError(str(path), "runs.table", "a CSV run table (relative to the study)",
+                         f"{str(table)!r}: no such file")
+    ref_col = compare.column if compare else None
     try:
         with open(table, newline="", encoding="utf-8") as fh:
             rows = list(csv.DictReader(fh))
     except UnicodeDecodeError as exc:
-        raise runs_node.error("table", "a CSV run table in UTF-8",
-                              f"{str(table)!r}: {exc.reason} at byte {exc.start}") from None
+        raise InputError(str(path), "runs.table", "a CSV run table in UTF-8",
+                         f"{str(table)!r}: {exc.reason} at byte {exc.start}") from None
     points = []
     for n, row in enumerate(rows, start=2):
         where = f"{table.name} line {n}"
-        for col in (id_col, scene_col) + ((ref_col,) if ref_col else ()):
+        for col in (runs.id, runs.scene) + ((ref_col,) if ref_col else ()):
             if col not in row:
                 raise InputError(str(table), where, f"a column {col!r}", f"columns {list(row)}")
-        if row[scene_col] not in scenes:
-            raise InputError(str(table), f"{where}, {scene_col}", f"one of {sorted(scenes)}", repr(row[scene_col]))
-        over = {k: _fill(v, row, setters, k) for k, v in (setters.data.items() if setters else ())}
-        for col, options in chooser.items():
+        if row[runs.scene] not in scenes:
+            raise InputError(str(table), f"{where}, {runs.scene}", f"one of {sorted(scenes)}", repr(row[runs.scene]))
+        over = {k: _fill(v, row, str(path), k) for k, v in runs.set.items()}
+        for col, options in runs.choose.items():
             if row.get(col) not in options:
                 raise InputError(str(table), f"{where}, {col}", f"one of {sorted(options)}", repr(row.get(col)))
             over.update(options[row[col]])
-        if not RUN_ID.fullmatch(row[id_col]):
-            raise InputError(str(table), f"{where}, {id_col}", RUN_ID_RULE, repr(row[id_col]))
-        points.append((row[id_col], row[scene_col], over, dict(row), row[ref_col] if ref_col else None))
+        if not RUN_ID.fullmatch(row[runs.id]):
+            raise InputError(str(table), f"{where}, {runs.id}", RUN_ID_RULE, repr(row[runs.id]))
+        points.append((row[runs.id], row[runs.scene], over, dict(row), row[ref_col] if ref_col else None))
     return points
 
 
-def _grid_points(grid: Node, scenes: dict) -> list[tuple]:
+def _grid_points(path: Path, grid: dict[str, list], scenes: dict) -> list[tuple]:
     """The cartesian product of the grid's values (declared order, scenes outermost)."""
-    keys = [k for k in grid.data if k != "scene"]
-    chosen = [str(s) for s in grid.raw("scene", list(scenes))]
+    keys = [k for k in grid if k != "scene"]
+    chosen = grid.get("scene", list(scenes))
     for s in chosen:
         if s not in scenes:
-            raise grid.error("scene", f"keys of [scenes] ({', '.join(sorted(scenes))})", repr(s))
-    axes = []
-    for k in keys:
-        values = grid.raw(k)
-        if not isinstance(values, list) or not values:
-            raise grid.error(k, "a non-empty array of values for this scene key", repr(values))
-        seen: dict[str, int] = {}
-        for i, v in enumerate(values):
-            first = seen.setdefault(json.dumps(v, sort_keys=True, default=str), i)
-            if first != i:
-                raise InputError(str(grid.file), f"grid.{json.dumps(k)}[{i}]",
-                                 f"distinct values (each grid point once; [{first}] is the same)", repr(v))
-        axes.append(values)
-    grid.finish()
-    combos = list(itertools.product(chosen, *axes))
+            raise InputError(str(path), "grid.scene", f"keys of [scenes] ({', '.join(sorted(scenes))})", repr(s))
+    combos = list(itertools.product(chosen, *(grid[k] for k in keys)))
     width = len(str(len(combos)))
     return [(f"{c[0]}-{n + 1:0{width}d}", c[0], dict(zip(keys, c[1:])), {"scene": c[0], **dict(zip(keys, c[1:]))},
              None) for n, c in enumerate(combos)]
@@ -187,15 +268,15 @@ def _refusal(scene: Path, runs: list[dict], key: str, value) -> InputError | Non
     return found
 
 
-def _check_scene_values(path: Path, grid: Node | None, dispersions: list[Dispersion], points: list[tuple],
-                        scenes: dict) -> None:
+def _check_scene_values(path: Path, grid: dict[str, list] | None, dispersions: list[Dispersion],
+                        points: list[tuple], scenes: dict) -> None:
     """Each grid value, and each dispersion at its centre, read by the scene reader at the key it sets on every
     scene it is set on, alone and in the scene's first run (its first grid point or table row, the dispersions
     at their centres): one refused there both ways (a word or true where a speed is asked, a length where an
     angle is, an angle of 1e30 deg) is refused before any run, as the runs it sets would fail. A value refused
     only beside other values (a dynamic friction above one static friction of the grid) is left to fail its
     runs."""
-    axes = {k: v for k, v in (grid.data.items() if grid else ()) if k != "scene"}
+    axes = {k: v for k, v in (grid or {}).items() if k != "scene"}
     for skey, first in {p[1]: p[2] for p in reversed(points)}.items():
         scene = scenes[skey]
         centres = {d.key: d.centre(_cell_shape(scene) if d.per_cell else None) for d in dispersions}
@@ -241,79 +322,53 @@ def _sampled(points: list[tuple], dispersions: list[Dispersion], samples: int, s
 
 
 def read_study(path: str | Path) -> Study:
-    """Read a study; problems are InputErrors naming the file and key path."""
+    """Read a study (StudyFile), then its scenes and run table and the runs they make; problems are InputErrors
+    naming the file and key path."""
     path = Path(path)
-    root = load_toml(path)
-    root.allow(("study", "scenes", "runs", "grid", "dispersions", "criteria", "compare", "matrix"))
-    head = root.table("study")
-    head.allow(("name", "title", "seed", "samples", "history", "note"))
-    name, title = head.string("name", path.stem), head.string("title", path.stem)
-    history = head.boolean("history", False)
-    head.string("note", "")
-    scenes_node = root.table("scenes")
-    scenes = {str(k): path.parent / str(v) for k, v in scenes_node.data.items()}
-    for k in scenes:
+    t = validate(StudyFile, load_toml(path).data, str(path))
+    head = t.study
+    scenes = {k: path.parent / v for k, v in t.scenes.items()}
+    for k, f in scenes.items():
         if not RUN_ID.fullmatch(k):
             raise InputError(str(path), f"scenes.{json.dumps(k)}", "a scene key of " + RUN_ID_RULE, repr(k))
-    for k, f in scenes.items():
         if not is_file(f):
-            raise scenes_node.error(k, "the path of a scene TOML (relative to the study)", f"{str(f)!r}: no such file")
-    scenes_node.allow(tuple(scenes))
+            raise InputError(str(path), f"scenes.{k}", "the path of a scene TOML (relative to the study)",
+                             f"{str(f)!r}: no such file")
     documents = {k: scene_document(f) for k, f in scenes.items()}
-    runs_node, grid = root.table("runs", optional=True), root.table("grid", optional=True)
-    if runs_node and grid:
-        raise root.error("grid", "either a run table [runs] or a [grid]", "both")
-    compare = root.table("compare", optional=True)
-    if runs_node:
-        points = _table_points(path, runs_node, scenes, compare)
-    elif grid:
-        points = _grid_points(grid, scenes)
+    if t.runs:
+        points = _table_points(path, t.runs, scenes, t.compare)
+    elif t.grid is not None:
+        points = _grid_points(path, t.grid, scenes)
     else:
         points = [("" if len(scenes) == 1 else k, k, {}, {"scene": k}, None) for k in scenes]
     if not points:
-        raise root.error("runs" if runs_node else "scenes", "at least one run (a scene, a grid point or a table row)",
-                         "none")
-    if compare:
-        compare.finish()
-    disp_node = root.table("dispersions", optional=True)
-    dispersions = [read_dispersion(disp_node, k) for k in disp_node.data] if disp_node else []
-    seed = head.integer("seed", None, minimum=0, maximum=SEED_MAX) if dispersions else None
-    if dispersions and seed is None:
-        raise head.error("seed", "an integer seed for the Monte Carlo dispersions", "nothing")
-    if dispersions and not head.has("samples"):
-        raise head.error("samples", "the number of Monte Carlo samples (an integer >= 1)", "nothing")
-    samples = head.integer("samples", 1)
-    if samples > 1 and not dispersions:
-        raise head.error("samples", "samples only with [dispersions] (without them every sample is the same run)",
-                         str(samples))
+        raise InputError(str(path), "runs" if t.runs else "scenes",
+                         "at least one run (a scene, a grid point or a table row)", "none")
+    dispersions = [dispersion(str(path), k, d) for k, d in t.dispersions.items()]
+    samples = head.samples or 1
     if len(points) * samples > MAX_RUNS:
-        raise head.error("samples", f"at most {MAX_RUNS:,} runs in all", f"{len(points) * samples:,}")
-    head.finish()
-    _check_scene_values(path, grid, dispersions, points, scenes)
+        raise InputError(str(path), "study.samples", f"at most {MAX_RUNS:,} runs in all", f"{len(points) * samples:,}")
+    _check_scene_values(path, t.grid, dispersions, points, scenes)
     if dispersions:
-        points = _sampled(points, dispersions, samples, seed, documents)
+        assert head.seed is not None                       # StudyFile requires it with dispersions
+        points = _sampled(points, dispersions, samples, head.seed, documents)
     ids = [p[0] for p in points]
     if len(set(ids)) != len(ids):
         dup = next(i for i in ids if ids.count(i) > 1)
-        raise root.error("runs.id", "a unique run id per run", f"{dup!r} more than once")
+        raise InputError(str(path), "runs.id", "a unique run id per run", f"{dup!r} more than once")
     runs = tuple(Run(pid, skey, documents[skey], over, params, ref) for pid, skey, over, params, ref in points)
-    criteria = read_criteria(root.table("criteria", optional=True))
-    mat = root.table("matrix", optional=True)
+    mat = t.matrix or Matrix()
     default_col = "scene" if len(scenes) > 1 else (list(points[0][3])[-1] if points[0][3] else "scene")
-    column = mat.string("columns", default_col) if mat else default_col
-    rows = tuple(mat.strings("rows")) if mat and mat.has("rows") else tuple(
+    column = mat.columns or default_col
+    rows = tuple(mat.rows) if mat.rows is not None else tuple(
         k for k in points[0][3] if k not in (column, "sample") and k not in (d.key for d in dispersions))
-    if runs_node:
-        candidates = [c for v in (runs_node.data.get("set") or {}).values() for c in _template_columns(v)]
+    if t.runs:
+        candidates = [c for v in t.runs.set.values() for c in _template_columns(v)]
     else:
-        candidates = list(grid.data if grid else ()) + [d.key for d in dispersions if not d.per_cell]
-    plot = tuple(mat.strings("plot")) if mat and mat.has("plot") else tuple(dict.fromkeys(candidates))
-    if mat and mat.has("plot") and len(plot) != 2:
-        raise mat.error("plot", "two parameter names (x, y) for the boundary plot", repr(list(plot)))
-    if mat:
-        mat.finish()
-    root.finish()
-    return Study(path, name, title, runs, criteria, rows, column, history, seed, plot)
+        candidates = list(t.grid or ()) + [d.key for d in dispersions if not d.per_cell]
+    plot = tuple(mat.plot) if mat.plot is not None else tuple(dict.fromkeys(candidates))
+    return Study(path, head.name or path.stem, head.title or path.stem, runs,
+                 t.criteria.criteria() if t.criteria else None, rows, column, head.history, head.seed, plot)
 
 
 def scene_hash(run: Run) -> str:

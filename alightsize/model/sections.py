@@ -3,11 +3,15 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
+from typing import Annotated, Literal
+
+from pydantic import RootModel, model_validator
 
 from alightsize.model import section_properties as props
 
 from alightsize.common import units
 from alightsize.common.config import Node
+from alightsize.common.typed import Quantity, Table, Tagged, refuse, validate
 
 # shape -> (dimensions it is given by, derived properties a config may override with printed values)
 SHAPES = {
@@ -17,7 +21,6 @@ SHAPES = {
     "plate": (("diameter", "thickness", "inner_diameter"), ()),
     "given": ((), ("area", "inertia", "c")),
 }
-_OVERRIDE_DIMS = {"area": "area", "inertia": "second_moment", "c": "length"}
 
 
 @dataclass(frozen=True)
@@ -123,24 +126,66 @@ def _check_overrides(node: Node, section: Section) -> None:
                             "the printed value is used: is it left over from other dimensions?")
 
 
+Length = Annotated[float, Quantity("length")]
+
+
+class _Printed(Table):
+    """Printed properties that replace the derived ones."""
+
+    area: Annotated[float, Quantity("area")] | None = None
+    inertia: Annotated[float, Quantity("second_moment")] | None = None
+    c: Length | None = None
+
+
+class TubeTable(_Printed):
+    shape: Literal["tube"]
+    outside_diameter: Length | None = None
+    inside_diameter: Length | None = None
+    wall: Length
+
+    @model_validator(mode="after")
+    def _one_diameter(self):
+        if (self.outside_diameter is None) == (self.inside_diameter is None):
+            raise refuse("exactly one of outside_diameter, inside_diameter",
+                         "neither" if self.outside_diameter is None else "both", "outside_diameter")
+        return self
+
+
+class RodTable(_Printed):
+    shape: Literal["rod"]
+    diameter: Length
+
+
+class RectangleTable(_Printed):
+    shape: Literal["rectangle"]
+    width: Length
+    height: Length
+
+
+class PlateTable(Table):
+    shape: Literal["plate"]
+    diameter: Length
+    thickness: Length
+    inner_diameter: Length | None = None
+
+
+class GivenTable(_Printed):
+    shape: Literal["given"]
+
+
+class SectionTable(RootModel):
+    """An item's `section`: the table of its `shape` (dimensions and printed properties in SI)."""
+
+    root: Tagged("shape", None, TubeTable, RodTable, RectangleTable, PlateTable, GivenTable)  # type: ignore[valid-type]
+
+
 def read_section(node: Node) -> Section:
-    shape = node.string("shape", choices=tuple(SHAPES))
-    names, overridable = SHAPES[shape]
-    node.allow(("shape", *names, *overridable))
-    dims = {n: node.quantity(n, "length") for n in names if node.has(n)}
-    if shape == "tube":
-        if ("outside_diameter" in dims) == ("inside_diameter" in dims):
-            raise node.error("outside_diameter", "exactly one of outside_diameter, inside_diameter",
-                             "both" if "outside_diameter" in dims else "neither")
-        required: tuple[str, ...] = ("wall",)
-    else:
-        required = tuple(n for n in names if n != "inner_diameter")
-    for n in required:
-        if n not in dims:
-            node.raw(n)  # raises "expected this key to be present"
-    overrides = {n: node.quantity(n, _OVERRIDE_DIMS[n]) for n in overridable if node.has(n)}
-    node.finish()
-    section = Section(shape, dims, overrides)
+    """An item's `section` table (SectionTable), refused where its dimensions describe no real section; a printed
+    property far from the derived one warns."""
+    t = validate(SectionTable, node.data, node.file, node.path).root
+    names, overridable = SHAPES[t.shape]
+    dims = {n: getattr(t, n) for n in names if getattr(t, n) is not None}
+    section = Section(t.shape, dims, {n: getattr(t, n) for n in overridable if getattr(t, n) is not None})
     problem = geometry_error(section)
     if problem:
         raise node.error(problem[0], problem[1], ", ".join(f"{n} {node.raw(n)}" for n in dims))

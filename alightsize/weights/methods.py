@@ -4,9 +4,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from math import pi
+from typing import Annotated, Literal
+
+from pydantic import BaseModel, RootModel, model_validator
 
 from alightsize.common.trace import Step
 from alightsize.common.config import Node
+from alightsize.common.typed import Integer, Number, Quantity, Table, Tagged, refuse, validate
 from alightsize.model.materials import Material, lookup
 from alightsize.model.sections import Section, given
 
@@ -102,53 +106,127 @@ class WeightSpec:
         return w, steps
 
 
+Length = Annotated[float, Quantity("length")]
+Area = Annotated[float, Quantity("area")]
+Mass = Annotated[float, Quantity("mass")]
+Ratio = Annotated[float, Number()]
+
+
+class _Weight(Table):
+    note: str = ""
+    label: str = ""                   # the row name in the weight table (default: the item's name)
+
+
+class _Formula(_Weight):
+    """The keys of the methods that weigh a volume: a span, an allowance, extra mass and the density."""
+
+    length: Length | None = None
+    allowance: Annotated[float, Number("any")] = 0.0
+    extra: Mass = 0.0
+    density: Annotated[float, Quantity("density")] | None = None
+    material: str | None = None       # a material of the library, for its density
+
+
+class TubeWeight(_Formula):
+    method: Literal["tube"]
+    diameter: Length | None = None    # the mean diameter
+    wall: Length | None = None
+
+
+class DiscWeight(_Formula):
+    method: Literal["disc"]
+    diameter: Length | None = None
+    thickness: Length | None = None
+    inner_diameter: Length | None = None
+    holes: Annotated[int, Integer(0)] = 0
+    hole_diameter: Length | None = None
+
+
+class PrismWeight(_Formula):
+    method: Literal["prism"]
+    area: Area | None = None
+    diameter: Length | None = None
+    width: Length | None = None
+    height: Length | None = None
+
+    @model_validator(mode="after")
+    def _one_area(self):
+        given = [k for k in ("area", "diameter", "width") if getattr(self, k) is not None]
+        if len(given) > 1:
+            raise refuse("one of area, diameter, or width and height", " and ".join(given), given[1])
+        if (self.width is None) != (self.height is None):
+            raise refuse("width and height together", "only " + ("height" if self.width is None else "width"),
+                         "width" if self.width is None else "height")
+        return self
+
+
+def _exactly_one(model: BaseModel, first: str, second: str) -> None:
+    if (getattr(model, first) is None) == (getattr(model, second) is None):
+        raise refuse(f"exactly one of {first}, {second}", "neither" if getattr(model, first) is None else "both",
+                     first)
+
+
+class ScaledWeight(_Weight):
+    method: Literal["scaled"]
+    k: Ratio = 1.0
+    model_weight: Mass
+    length_ratio: Ratio
+    area_ratio: Ratio | None = None
+    model_area: Area | None = None
+    density_ratio: Ratio | None = None
+    model_material: str | None = None
+
+    @model_validator(mode="after")
+    def _ratios(self):
+        _exactly_one(self, "area_ratio", "model_area")
+        _exactly_one(self, "density_ratio", "model_material")
+        return self
+
+
+class FixedWeight(_Weight):
+    method: Literal["fixed"]
+    weight: Mass
+
+
 METHODS = ("tube", "disc", "prism", "scaled", "fixed")
 
 
-def _area(node: Node) -> float | None:
-    if node.has("area"):
-        return node.quantity("area", "area")
-    if node.has("diameter"):
-        return pi / 4 * node.quantity("diameter", "length") ** 2
-    if node.has("width"):
-        return node.quantity("width", "length") * node.quantity("height", "length")
-    return None
+class WeightTable(RootModel):
+    """An item's `weight`: the table of its `method`."""
+
+    root: Tagged("method", None, TubeWeight, DiscWeight, PrismWeight, ScaledWeight,  # type: ignore[valid-type]
+                 FixedWeight)
+
+
+def _area(t: PrismWeight) -> float | None:
+    """A prism's cross-section area from what the table gives (None: the section's)."""
+    if t.diameter is not None:
+        return pi / 4 * t.diameter ** 2
+    if t.width is not None and t.height is not None:
+        return t.width * t.height
+    return t.area
 
 
 def read_weight(node: Node, materials: dict[str, Material]) -> WeightSpec:
-    method = node.string("method", choices=METHODS)
-    q = lambda name, dim: node.quantity(name, dim, default=None)  # noqa: E731 - optional quantity
-    p: dict = {"rho": q("density", "density")}
-    if node.has("material"):
+    """An item's `weight` table (WeightTable) with its materials' densities: the method's parameters (SI)."""
+    t = validate(WeightTable, node.data, node.file, node.path).root
+    p: dict = {"rho": getattr(t, "density", None)}
+    if getattr(t, "material", None) is not None:
         p["rho"] = lookup(materials, node).density
-    if method == "fixed":
-        p["weight"] = node.quantity("weight", "mass")
-    elif method == "scaled":
-        p["k"] = node.number("k", 1.0)
-        p["model_weight"] = node.quantity("model_weight", "mass")
-        p["length_ratio"] = node.number("length_ratio")
-        p["area_ratio"] = node.number("area_ratio", None)
-        p["model_area"] = q("model_area", "area")
-        if (p["area_ratio"] is None) == (p["model_area"] is None):
-            raise node.error("area_ratio", "exactly one of area_ratio, model_area", "both or neither")
-        p["density_ratio"] = node.number("density_ratio", None)
-        p["model_density"] = None
-        if node.has("model_material"):
-                p["model_density"] = lookup(materials, node, "model_material").density
-        if (p["density_ratio"] is None) == (p["model_density"] is None):
-            raise node.error("density_ratio", "exactly one of density_ratio, model_material", "both or neither")
+    if isinstance(t, FixedWeight):
+        p["weight"] = t.weight
+    elif isinstance(t, ScaledWeight):
+        p.update(k=t.k, model_weight=t.model_weight, length_ratio=t.length_ratio, area_ratio=t.area_ratio,
+                 model_area=t.model_area, density_ratio=t.density_ratio,
+                 model_density=None if t.model_material is None else
+                 lookup(materials, node, "model_material").density)
     else:
-        p.update(length=q("length", "length"), allowance=node.number("allowance", 0.0, positive=False),
-                 extra=node.quantity("extra", "mass", default=0.0))
-        if method == "tube":
-            p.update(diameter=q("diameter", "length"), wall=q("wall", "length"))
-        elif method == "disc":
-            p.update(diameter=q("diameter", "length"), thickness=q("thickness", "length"),
-                     inner_diameter=node.quantity("inner_diameter", "length", default=None),
-                     holes=node.integer("holes", 0, minimum=0), hole_diameter=q("hole_diameter", "length"))
+        p.update(length=t.length, allowance=t.allowance, extra=t.extra)
+        if isinstance(t, TubeWeight):
+            p.update(diameter=t.diameter, wall=t.wall)
+        elif isinstance(t, DiscWeight):
+            p.update(diameter=t.diameter, thickness=t.thickness, inner_diameter=t.inner_diameter, holes=t.holes,
+                     hole_diameter=t.hole_diameter)
         else:
-            p["area"] = _area(node)
-    node.string("note", "")
-    label = node.string("label", "")
-    node.finish()
-    return WeightSpec(method, p, node.path, label)
+            p["area"] = _area(t)
+    return WeightSpec(t.method, p, node.path, t.label)

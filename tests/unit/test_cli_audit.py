@@ -96,7 +96,8 @@ def test_audit_fails_when_a_wall_is_thinned(tmp_path):
 
 
 @pytest.mark.parametrize("edit, key, found", [
-    (lambda t: t.replace('wall = "0.0675 in"', 'wal = "0.0675 in"'), 'item["Upper Truss"].section.wal', "unknown key"),
+    (lambda t: t.replace('wall = "0.0675 in"', 'wal = "0.0675 in"'), 'item["Upper Truss"].section.wal',
+     "'wal' (did you mean 'wall'?)"),
     (lambda t: t.replace('load = "33784 lbf"', 'load = "33784 lb"', 1),
      'item["Upper Truss"].check["compression"].load', "33784 lb"),
     (lambda t: t.replace('length = "4.98 in"', 'length = "-4.98 in"', 1),

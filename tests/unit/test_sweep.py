@@ -15,8 +15,8 @@ import numpy as np
 import pytest
 
 from alightsize.cli import main
-from alightsize.common.config import Node
-from alightsize.landings.dispersions import read_dispersion
+from alightsize.common.typed import validate
+from alightsize.landings.dispersions import DispersionTable, dispersion
 from alightsize.common.errors import InputError
 from alightsize.landings.run_store import TIMING
 from alightsize.landings.study import read_study
@@ -64,9 +64,8 @@ def test_truncated_normal_draws_have_the_closed_form_mean():
     """Mean of N(10, 1.146) truncated to [5, 12]: mu - sd (phi(b) - phi(a)) / (Phi(b) - Phi(a)) (closed form).
     200,000 draws: standard error sd_trunc / sqrt(n) < 0.003, so 0.01 is over three standard errors."""
     from scipy.stats import norm
-    node = Node("s.toml", "dispersions", {"x": {"dist": "truncated_normal", "mean": "10 deg", "sd": "0.02 rad",
-                                                "low": "5 deg", "high": "12 deg"}})
-    d = read_dispersion(node, "x")
+    table = {"dist": "truncated_normal", "mean": "10 deg", "sd": "0.02 rad", "low": "5 deg", "high": "12 deg"}
+    d = dispersion("s.toml", "x", validate(DispersionTable, table, "s.toml"))
     mu, sd, lo, hi = d.params
     a, b = (lo - mu) / sd, (hi - mu) / sd
     exact = mu - sd * (norm.pdf(b) - norm.pdf(a)) / (norm.cdf(b) - norm.cdf(a))
@@ -78,9 +77,9 @@ def test_truncated_normal_draws_have_the_closed_form_mean():
 def test_a_dispersion_bound_beyond_any_float_is_bad_input():
     """An integer bound no float holds (TOML integers are unbounded here) is refused naming its key, not an
     internal error."""
-    node = Node("s.toml", "dispersions", {"x": {"dist": "uniform", "low": 10 ** 400, "high": 1}})
+    table = validate(DispersionTable, {"dist": "uniform", "low": 10 ** 400, "high": 1}, "s.toml")
     with pytest.raises(InputError, match=r"dispersions\.x\.low: expected a finite value"):
-        read_dispersion(node, "x")
+        dispersion("s.toml", "x", table)
 
 
 def test_runs_depend_only_on_seed_and_sample(tmp_path):

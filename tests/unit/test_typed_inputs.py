@@ -103,3 +103,14 @@ def test_the_lander_reference_names_every_key_of_the_lander_tables():
     for model in (LanderFile, LanderHead, Requirements, Envelope, MonteCarlo, ReportTable, TelescopingStructure,
                   ArticulatedStructure):
         assert set(model.model_fields) - {"note"} <= written, model.__name__
+
+
+def test_the_study_reference_lists_every_key_the_models_take_and_no_other():
+    from alightsize.landings import criteria, dispersions, study
+    spread = set().union(*(set(m.model_fields) for m in (dispersions.Normal, dispersions.Uniform,
+                                                          dispersions.TruncatedNormal)))
+    sections = {"`[study]`": set(study.StudyHead.model_fields), "`[compare]`": set(study.Compare.model_fields),
+                "`[runs]`": set(study.RunsTable.model_fields), "`[dispersions]`": spread,
+                "`[criteria]`": set(criteria.CriteriaTable.model_fields), "`[matrix]`": set(study.Matrix.model_fields)}
+    # ("`[compare]`" first: its heading names `[runs]` too)
+    assert documented(ROOT / "docs" / "reference" / "study.md", sections) == sections
