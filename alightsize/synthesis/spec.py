@@ -36,7 +36,7 @@ from pydantic import PlainValidator, model_validator
 from alightsize.common.config import SEED_MAX, Node, load_toml
 from alightsize.common.errors import InputError
 from alightsize.common.typed import Integer, Number, Quantities, Table, refuse, validate
-from alightsize.common.units import registry
+from alightsize.common.units import DIMS, RANGES, dimension_of, registry
 from alightsize.pipeline.lander import cell_curve, crush_stroke
 
 CELL_KEYS = ("crush_force", "stroke")          # "cells.NAME.crush_force" / "cells.NAME.stroke"
@@ -64,8 +64,19 @@ class FreeParameter:
         return f"{value * self.per_si:.4g} {self.unit}"
 
     def toml(self, value: float) -> str:
-        """The value as a TOML quantity in the parameter's own unit, to full precision."""
+        """The value as a TOML quantity in the parameter's own unit, to full precision; a magnitude below the
+        smallest nonzero one the file's parsers take in its dimension (alightsize.common.units.RANGES, 1e-6 m for
+        a length) reads 0, as a candidate drawn next to a zero bound would otherwise be refused."""
+        if abs(value) < _floor(self.unit):
+            value = 0.0
         return f"{value * self.per_si!r} {self.unit}"
+
+
+def _floor(unit: str) -> float:
+    """The largest of the parsers' smallest nonzero magnitudes (SI) among the dimensions of `unit`."""
+    dims = dimension_of(registry().Quantity(1.0, unit))
+    return max((RANGES[d.name][0] for d in DIMS.values() if (d.mass, d.length, d.time) == dims and d.name in RANGES),
+               default=0.0)
 
 
 @dataclass(frozen=True)
