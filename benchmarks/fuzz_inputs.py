@@ -44,7 +44,8 @@ from typing import Any
 ROOT = Path(__file__).resolve().parent.parent
 _E = "examples/affdl-tr-66-33/"
 KINDS = {
-    "lander": ["examples/lunar_lander.toml", "examples/capsule_3000lb.toml", _E + "landers/*.toml"],
+    "lander": ["examples/lunar_lander.toml", "examples/capsule_3000lb.toml", "examples/lunar_tripod.toml",
+               "examples/mars_tripod.toml", _E + "landers/*.toml"],
     "design": [_E + "*.toml"],
     "scene": [_E + "scenes/*.toml", "examples/terrain/lunar_regolith.toml", "examples/terrain/lunar_rock.toml",
               "examples/terrain/lunar_rock_under_leg.toml"],
