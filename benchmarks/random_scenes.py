@@ -6,14 +6,15 @@ report's telescoping configuration 1, its articulated configuration 5, or the lu
 massless footpads or 1-50 kg ones 0.2-0.8 m across on rigid ground or a shipped soil, 0-2 rocks or steps within
 the leg span, gravity from 1e-6 m/s^2 to 1.5 g0, every cell's loading curve (3-6 points, some with a first point
 of 1e-9 N: free play), and non-slip friction in a fifth of the landings; then the slope, velocity, attitude,
-roll rate and friction of random_landing. A bottomed cell does not end these landings (its stiff ramp is part of
-what they test). Without it the sweep is about configuration 1: massless footpads on
+roll rate and friction of random_landing; --tripods adds the lunar tripod example's legs to the kinds
+(footpads of 1-50 kg: massless tripod footpads that can slip are refused). A bottomed cell does not end these
+landings (its stiff ramp is part of what they test). Without it the sweep is about configuration 1: massless footpads on
 the plane, or one random step or rock within the leg span (--terrain), footpads of that mass (--footpad-mass),
 that shipped soil under nominal 0.5 m footpads (--soil, needs --footpad-mass).
 
 Reports the outcome counts (per kind in the mixed sweep), failures (must be none), the worst energy closure,
 and the wall time per landing and per simulated second.
-Usage: python benchmarks/random_scenes.py [-n 1000] [--t-final 1.0] [--workers 2] [--mixed | [--terrain]
+Usage: python benchmarks/random_scenes.py [-n 1000] [--t-final 1.0] [--workers 2] [--mixed [--tripods] | [--terrain]
 [--footpad-mass KG] [--soil NAME]] [--seed N] [--first K] [--json FILE]
 """
 
@@ -42,6 +43,10 @@ SCENES = ROOT / "examples" / "affdl-tr-66-33" / "scenes"
 BASE = SCENES / "telescoping_config1.toml"
 KINDS = {"telescoping_1966": BASE, "articulated_1966": SCENES / "articulated_config5.toml",
          "telescoping_lunar": ROOT / "examples" / "lunar_lander.toml"}
+# with --tripods: also the lunar tripod example's legs (footpads always with mass: massless ones that can slip are
+# refused); the kind is then drawn among all four, so the draws differ from the sweep without them. (A cantilever's
+# drawn primary curve may run past its knee, which is refused: no cantilever here.)
+TRIPOD_KINDS = {"tripod_lunar": ROOT / "examples" / "lunar_tripod.toml"}
 SEED = 20261121
 PAD_DIAMETER = 0.5                  # m: a nominal footpad (the report gives none for configuration 1)
 HELD_SHARE = 0.2                    # landings kept on non-slip friction (the report's 1.5e6 / 1.0e6)
@@ -52,14 +57,15 @@ def _base(path: Path) -> SceneConfig:
     return read_scene(path)
 
 
-def mixed(seed: int, k: int) -> tuple[str, SceneConfig, dict]:
+def mixed(seed: int, k: int, tripods: bool = False) -> tuple[str, SceneConfig, dict]:
     """Landing k of the mixed sweep: (kind, scene config, the draws beyond random_landing's)."""
     rng = np.random.default_rng([seed, k, 1])
-    kind = list(KINDS)[int(rng.integers(len(KINDS)))]
-    base = _base(KINDS[kind])
+    kinds = {**KINDS, **TRIPOD_KINDS} if tripods else KINDS
+    kind = list(kinds)[int(rng.integers(len(kinds)))]
+    base = _base(kinds[kind])
     cells = {name: cell for names, leg in zip(base.cell_names, base.scene.legs) for name, cell in zip(names, leg.cells)}
-    over = mixed_overrides(rng, cells, tuple(soil_presets()))
-    cfg = read_scene(KINDS[kind], over)
+    over = mixed_overrides(rng, cells, tuple(soil_presets()), massless=kind not in TRIPOD_KINDS)
+    cfg = read_scene(kinds[kind], over)
     scene = random_landing(cfg.scene, seed, k)
     if rng.uniform() < HELD_SHARE:
         scene = dataclasses.replace(scene, mu_static=1.5e6, mu_dynamic=1.0e6)
@@ -68,7 +74,7 @@ def mixed(seed: int, k: int) -> tuple[str, SceneConfig, dict]:
 
 
 def one(k: int, t_final: float, features: bool = False, footpad_mass: float = 0.0, soil: str | None = None,
-        former: bool = True, seed: int = SEED) -> dict:
+        former: bool = True, seed: int = SEED, tripods: bool = False) -> dict:
     if former:
         base = _base(BASE)
         kind, over = "telescoping_1966", {}
@@ -76,7 +82,7 @@ def one(k: int, t_final: float, features: bool = False, footpad_mass: float = 0.
                                     soil=soil_presets()[soil] if soil else None, footpad_diameter=PAD_DIAMETER)
         controls = base.controls
     else:
-        kind, cfg, over = mixed(seed, k)
+        kind, cfg, over = mixed(seed, k, tripods)
         scene, controls = cfg.scene, dataclasses.replace(cfg.controls, stop_on_bottoming=False)
     res = simulate(scene, dataclasses.replace(controls, t_final=t_final))
     return {"k": k, "kind": kind, "status": res.status, "t_end": float(res.t[-1]), "wall_s": res.wall_s,
@@ -98,6 +104,8 @@ def main() -> None:
     ap.add_argument("--json", type=Path)
     ap.add_argument("--mixed", action="store_true", help="draw each landing's scene (kind, footpads, soil, terrain, "
                     "gravity, cells)")
+    ap.add_argument("--tripods", action="store_true", help="with --mixed: draw the tripod and cantilever examples' "
+                    "legs too (other draws than without)")
     ap.add_argument("--terrain", action="store_true", help="a random step or rock within the leg span")
     ap.add_argument("--footpad-mass", type=float, default=0.0, help="footpad mass, kg (0: massless, the default)")
     ap.add_argument("--soil", help="a shipped soil under the footpads (needs --footpad-mass)")
@@ -107,14 +115,16 @@ def main() -> None:
         ap.error("--mixed draws the terrain, footpads and soil itself")
     mass = a.footpad_mass
     ks = range(a.first, a.first + a.n)
-    for kind in ([None] if former else KINDS):                 # compile (cached) before timing
-        k0 = next(k for k in range(100) if former or mixed(a.seed, k)[0] == kind)
-        one(k0, 0.01, a.terrain, mass, a.soil, former, a.seed)
+    if a.tripods and former:
+        ap.error("--tripods needs --mixed")
+    for kind in ([None] if former else {**KINDS, **TRIPOD_KINDS} if a.tripods else KINDS):   # compile before timing
+        k0 = next(k for k in range(100) if former or mixed(a.seed, k, a.tripods)[0] == kind)
+        one(k0, 0.01, a.terrain, mass, a.soil, former, a.seed, a.tripods)
     t0 = time.perf_counter()
     with ProcessPoolExecutor(a.workers) as pool:
         n = len(ks)
         runs = list(pool.map(one, ks, [a.t_final] * n, [a.terrain] * n, [mass] * n, [a.soil] * n, [former] * n,
-                             [a.seed] * n, chunksize=8))
+                             [a.seed] * n, [a.tripods] * n, chunksize=8))
     wall = time.perf_counter() - t0
     walls = np.array([r["wall_s"] for r in runs])
     sim_t = np.array([r["t_end"] for r in runs])
@@ -122,7 +132,8 @@ def main() -> None:
     for r in runs:
         by_kind[r["kind"]][r["status"]] += 1
     out = {"n": a.n, "first": a.first, "seed": a.seed, "t_final_s": a.t_final, "workers": a.workers,
-           "sweep": "configuration 1" if former else "mixed", "terrain": a.terrain, "footpad_mass_kg": mass,
+           "sweep": "configuration 1" if former else "mixed with tripods" if a.tripods else "mixed",
+           "terrain": a.terrain, "footpad_mass_kg": mass,
            "soil": a.soil, "machine": platform.processor() or platform.machine(),
            "outcomes": dict(Counter(r["status"] for r in runs)),
            "outcomes_by_kind": {k: dict(v) for k, v in sorted(by_kind.items())},

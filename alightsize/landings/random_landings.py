@@ -81,12 +81,14 @@ def random_curve(rng: np.random.Generator, cell: CellModel) -> dict:
             "unloading_rate": _q(rate, "N/m"), "damping": _q(cell.c, "N*s/m")}
 
 
-def mixed_overrides(rng: np.random.Generator, cells: dict[str, CellModel], soils: tuple[str, ...]) -> dict:
+def mixed_overrides(rng: np.random.Generator, cells: dict[str, CellModel], soils: tuple[str, ...],
+                    massless: bool = True) -> dict:
     """Overrides of a base scene (dotted key -> TOML value) for a mixed sweep: footpads massless (a third of the
-    draws) or of 1-50 kg, 0.2-0.8 m across; with mass, rigid ground or one of `soils` (equally likely); gravity
-    log-uniform from G_LEAST to 1.5 g0; every cell of `cells` (name -> its model) redrawn (random_curve)."""
+    draws; never with `massless` False, for legs whose footpads need mass) or of 1-50 kg, 0.2-0.8 m across; with
+    mass, rigid ground or one of `soils` (equally likely); gravity log-uniform from G_LEAST to 1.5 g0; every cell of
+    `cells` (name -> its model) redrawn (random_curve)."""
     over: dict = {}
-    mass = 0.0 if rng.uniform() < 1.0 / 3.0 else rng.uniform(1.0, 50.0)
+    mass = 0.0 if massless and rng.uniform() < 1.0 / 3.0 else rng.uniform(1.0, 50.0)
     diameter = rng.uniform(0.2, 0.8)
     ground = int(rng.integers(len(soils) + 1)) if mass > 0.0 else 0
     over["legs.footpad_mass"] = _q(mass, "kg")
