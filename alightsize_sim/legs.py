@@ -114,8 +114,13 @@ def _stub_slack(geo, cells, i, mem, defl, X, P, R):
     return 0.0
 
 
+@njit(cache=True)
+def _stub_at_set(geo, cells, i, mem, shape):
+    return shape[0], shape[1], shape[2]
+
+
 _STUBS = {"leg_force": _stub_leg_force, "free_footpad": _stub_footpad, "lift_shape": _stub_lift,
-          "slack": _stub_slack}
+          "slack": _stub_slack, "at_set": _stub_at_set}
 
 
 def _kind(geo, i) -> int:
