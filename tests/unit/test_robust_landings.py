@@ -94,3 +94,17 @@ def test_seeded_mixed_landings_never_fail():
         r = sweep.one(k, 0.3, former=False)
         assert r["status"] != "failed" and r["finite"], f"landing {k}: {r}"
         assert r["closure_rel"] < CLOSURE
+
+
+@pytest.mark.skipif(ROOT is None, reason="needs the repository's benchmarks/")
+@pytest.mark.parametrize("k", [874, 536, 450, 3437])
+def test_footpad_lifted_on_a_rock_flank_closes(k):
+    """Landings of the mixed sweep with footpads that have mass sliding up a rock's flank while their leg lifts
+    them (fe3 < 0 with the leg still on the ground): the surface's normal force that balances the footpad across
+    the plane was held at zero, so the lift fe3 u3 was missing from the footpad's energy; closure 2.3e-4, 1.9e-4,
+    1.1e-4 and 7.4e-4 (874 and 3437 telescoping on the LM surface, 4.3 and 25 kg footpads; 536 articulated on
+    rigid ground, 9.8 kg; 450 telescoping on regolith, 34 kg). Run to 1 s or their outcome."""
+    r = _sweep().one(k, 1.0, former=False)
+    assert r["footpad_mass"] > 0.0 and r["features"] > 0
+    assert r["status"] != "failed" and r["finite"], f"landing {k}: {r}"
+    assert r["closure_rel"] < CLOSURE
