@@ -42,6 +42,7 @@ class DesignSpec:
     # items whose loads the landings give (a tripod leg's members): stored landing rows -> the items that
     # replace `items` (which hold them under stand-in loads, validated when read)
     landing_items: Callable[[tuple[dict, ...]], tuple[Item, ...]] | None = None
+    footpad_mass: float | None = None         # kg: the landings' footpad mass the sized `footpad` item must match
 
 
 @dataclass(frozen=True)
@@ -61,6 +62,7 @@ class DesignConfig:
     load_refs: tuple[LoadReference, ...] = ()
     landings: Landings | None = None
     weight_goal: float | None = None
+    footpad_mass: float | None = None         # kg, as DesignSpec's
 
 
 def read_items(nodes: tuple[Node, ...], mats: dict[str, Material], required: float, root: Node,
@@ -149,5 +151,6 @@ def prepare(spec: DesignSpec, landings_dir: Path | None = None, progress: bool =
     items = tuple(item for item, _ in resolved)
     refs = tuple(r for _, item_refs in resolved for r in item_refs)
     return DesignConfig(spec.path, spec.configuration, spec.title, spec.capsule_mass, spec.legs, spec.units,
-                        spec.required, spec.decimals, items, loads, refs, landings, spec.weight_goal)
+                        spec.required, spec.decimals, items, loads, refs, landings, spec.weight_goal,
+                        spec.footpad_mass)
 

@@ -61,7 +61,7 @@ from alightsize.pipeline.items import Item, RequiredFactor
 from alightsize.pipeline.members import member_item
 from alightsize.pipeline.outrigger import (OUTRIGGER, Outrigger, articulated_outrigger, outrigger_item,
                                            outrigger_span, telescoping_outrigger)
-from alightsize.pipeline.tripod_members import TripodLoads, landing_tripod_items, tripod_items
+from alightsize.pipeline.tripod_members import FOOTPAD, TripodLoads, landing_tripod_items, tripod_items
 
 SCENE_TABLES = ("capsule", "cells", "legs", "terrain", "initial", "controls", "output")
 ALL_CONFIGURATIONS = "all"           # the combined envelope of App. III cell variants when none is named
@@ -470,8 +470,9 @@ def read_lander(path: str | Path, overrides: dict | None = None, root: Node | No
     landings = LandingSpec(study, envelopes, "criteria", member_loads)
     derived = (partial(_tripod_landing_items, *tripod, rules, mats, req.required, items[n_members:]) if tripod
                else None)
+    pad = scene_file.legs.footpad_mass if tripod and FOOTPAD in tripod[1].data else None
     spec = DesignSpec(path, name, title, scene.scene.mass, len(scene.scene.legs), units, req.required, req.decimals,
-                      mats, items, loads, landings, req.weight_goal, rules, derived)
+                      mats, items, loads, landings, req.weight_goal, rules, derived, pad)
     return Lander(spec, scene, req, document)
 
 
