@@ -182,7 +182,7 @@ class DesignResult:
         MS and verdict; None where f is infinite), "weights" (per item), with landing cases "landings" (one row per
         landing as stored) and "interface_loads" (each body hardpoint's largest force), with sized items "sizing"
         (one row per sized item) and with envelope loads "load_references" (one row per check load taken from an
-        envelope). Copies: the result keeps its own."""
+        envelope; a tripod lander's: one per strut-load extreme over its landings, envelope "landings"). Copies: the result keeps its own."""
         return {name: frame.copy() for name, frame in self.tables.items()}
 
     @cached_property
@@ -215,13 +215,15 @@ class DesignResult:
         row = {"load_key": r.key, "item": check[0].name if check else None, "kind": check[1].kind if check else None,
                "key": r.key[len(check[1].where) + 1:] if check else None, "envelope": r.envelope,
                "member": r.member, "sense": r.sense, "factor": r.factor, "value_N": r.value,
-               "at_rad": tuple(r.extreme.at) if r.extreme else None,
+               "at_rad": tuple(r.extreme.at) if r.extreme and r.extreme.at else None,
                "configuration": r.extreme.configuration if r.extreme else None, "quasi_static_N": None,
                "governs": None}
         if cfg.landings is not None and r.extreme is not None and r.envelope in cfg.landings.envelopes:
             qs = cfg.landings.quasi_static_load(r.envelope, r.member, r.sense)
             row["quasi_static_N"] = qs * r.factor if qs is not None else None
             row["governs"] = "landing" if r.extreme.configuration.startswith(LANDING) else "quasi-static"
+        elif cfg.landings is not None and r.extreme is not None and r.extreme.configuration.startswith(LANDING):
+            row["governs"] = "landing"                  # a load of the landings alone (a tripod's)
         return row
 
     def plot(self, kind: str = "factors"):

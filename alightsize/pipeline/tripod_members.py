@@ -38,8 +38,11 @@ from alightsize.checks.rules import RULES, Rules
 from alightsize.common.config import Node
 from alightsize.common.errors import InputError
 from alightsize.common.typed import validate
+from alightsize.loads.envelopes import Extreme
+from alightsize.loads.quasi_static import LoadReference
 from alightsize.model.materials import Material
 from alightsize.pipeline.cores import core_prism
+from alightsize.pipeline.landings import LANDING
 from alightsize.pipeline.members import Member, _pin, _plate
 from alightsize_sim.tripod_leg import TripodLeg, strut_forces
 
@@ -49,6 +52,7 @@ CANTILEVER = ("primary_upper", "primary_lower", *INVERTED[1:])
 TRIPOD_ITEM_KEYS = ("material", "section", "weight", "size", "note", "required_design_factor", "allow_below_one")
 CORE_KEYS = ("material", "weight", "note")            # a core is weighed, not checked
 FOOTPAD = "footpad"                                   # the member (and item) the landings' footpad_mass must match
+TRIPOD_ENVELOPE = "landings"                          # the envelope of every landing, a tripod's member loads
 CORE_WEIGHT_KEYS = ("allowance", "extra", "label", "note")
 # a sandwich footpad's checks (alightsize.checks.sandwich)
 SANDWICH_CHECKS = ("sandwich_face_stress", "sandwich_face_buckling", "sandwich_core_shear", "sandwich_core_crushing")
@@ -117,6 +121,25 @@ class TripodLoads:
                    max(0.0, max(float(x.primary_upper) for x in s)), max(float(x.knee_moment) for x in s),
                    max(float(np.linalg.norm(x.hardpoint_forces[0])) for x in s),
                    float(np.linalg.norm(forces, axis=1).max()))
+
+
+def tripod_references(rows) -> tuple[LoadReference, ...]:
+    """The loads of `TripodLoads.from_landings(rows)`, each with the landing that set it (the first in the rows on a
+    tie): one reference per stored member and sense ever loaded, envelope TRIPOD_ENVELOPE (every landing), sense
+    "tension", "compression" or "largest" (knee_moment in N m, primary_pin and footpad in N)."""
+    best: dict[tuple[str, str], tuple[float, str]] = {}
+    for r in rows:
+        for d in json.loads(r.get("member_loads_json") or "[]"):
+            if "largest" in d:
+                senses = [("largest", d["largest"])]
+            else:
+                c = d["compression_N"]
+                senses = [("tension", d["tension_N"]), ("compression", None if c is None else -c)]
+            for sense, v in senses:
+                if v is not None and v > best.get((d["member"], sense), (0.0, ""))[0]:
+                    best[(d["member"], sense)] = (v, r["run_id"])
+    return tuple(LoadReference(f"{m} {sense}", TRIPOD_ENVELOPE, m, sense, 1.0, v, Extreme(v, (), LANDING + run))
+                 for (m, sense), (v, run) in best.items())
 
 
 def overhang_effective_length(a: float, b: float) -> float:

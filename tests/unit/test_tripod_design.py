@@ -186,3 +186,23 @@ def test_a_lander_without_a_footpad_member_has_no_footpad_mass_to_match(tmp_path
     path.write_text(text)
     spec = read_lander(path, SMALL).spec
     assert spec.footpad_mass is None
+
+
+def test_each_tripod_load_names_the_landing_that_set_it(inverted):
+    # With no landing named anywhere, every tripod load is the largest over every landing (the envelope of all
+    # of them, recomputed here from the rows); the load_references table gives each with the landing it came from,
+    # whose own stored extreme is that value (exactly: the same float), and the check loads are those values.
+    res = inverted
+    rows = res.config.landings.rows
+    s = _stored(rows)
+    refs = res.to_pandas()["load_references"]
+    tripod = refs[refs["envelope"] == "landings"]
+    assert len(tripod) > 0 and set(tripod["governs"]) == {"landing"}
+    for r in tripod.to_dict("records"):
+        key = r["member"] if r["sense"] == "largest" else f"{r['member']} {r['sense']}"
+        assert r["value_N"] == s[key]
+        run = r["configuration"].removeprefix("landing ")
+        own = _stored([x for x in rows if x["run_id"] == run])
+        assert own[key] == r["value_N"]
+    footpad = tripod[(tripod["member"] == "footpad")]["value_N"].item()
+    assert _check(res, "footpad", "sandwich_core_shear")["W"] == pytest.approx(footpad, rel=PARSE)
