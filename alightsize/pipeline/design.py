@@ -182,7 +182,8 @@ class DesignResult:
         MS and verdict; None where f is infinite), "weights" (per item), with landing cases "landings" (one row per
         landing as stored) and "interface_loads" (each body hardpoint's largest force), with sized items "sizing"
         (one row per sized item) and with envelope loads "load_references" (one row per check load taken from an
-        envelope; a tripod lander's: one per strut-load extreme over its landings, envelope "landings"). Copies: the result keeps its own."""
+        envelope; a tripod lander's: one per strut-load extreme over its landings, envelope "landings"). Copies:
+        the result keeps its own."""
         return {name: frame.copy() for name, frame in self.tables.items()}
 
     @cached_property
