@@ -200,8 +200,8 @@ def _interface(res: DesignResult, system: str) -> list[dict]:
 
 def _loads_context(res: DesignResult, system: str) -> dict | None:
     cfg = res.config
-    if cfg.loads is None:
-        return None
+    if cfg.loads is None:          # a tripod lander's loads are the landings': only their references to show
+        return {"telescoping": [], "tables": [], "heatmaps": []} if "load_references" in res.tables else None
     landed = cfg.landings is not None and cfg.loads.telescoping is not None and TELESCOPING in cfg.landings.envelopes
     return loads_context(cfg.loads, system, res.governing_cases(),
                          cfg.landings.quasi_static.telescoping if landed else None)
