@@ -472,7 +472,10 @@ def read_lander(path: str | Path, overrides: dict | None = None, root: Node | No
     landings = LandingSpec(study, envelopes, "criteria", member_loads)
     derived = (partial(_tripod_landing_items, *tripod, rules, mats, req.required, items[n_members:]) if tripod
                else None)
-    pad = scene_file.legs.footpad_mass if tripod and FOOTPAD in tripod[1].data else None
+    # the footpad mass the sized footpad must match; none with massless footpads, which a tripod has only where
+    # the landings hold its footpads (a footpad that never moves plays no part through its mass)
+    m = scene_file.legs.footpad_mass
+    pad = m if tripod and FOOTPAD in tripod[1].data and m > 0 else None
     spec = DesignSpec(path, name, title, scene.scene.mass, len(scene.scene.legs), units, req.required, req.decimals,
                       mats, items, loads, landings, req.weight_goal, rules, derived, pad)
     return Lander(spec, scene, req, document)

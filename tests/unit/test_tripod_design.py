@@ -188,6 +188,14 @@ def test_a_lander_without_a_footpad_member_has_no_footpad_mass_to_match(tmp_path
     assert spec.footpad_mass is None
 
 
+
+def test_massless_held_footpads_have_no_footpad_mass_to_match():
+    # Footpads that cannot slip (friction 1,000) may be massless: nothing moves them, so no mass to match.
+    spec = read_lander(EXAMPLE, {**SMALL, "requirements.envelope.friction": [1000, 1000], "legs.footpad_mass": "0 kg"}
+                       ).spec
+    assert spec.footpad_mass is None
+
+
 def test_each_tripod_load_names_the_landing_that_set_it(inverted):
     # With no landing named anywhere, every tripod load is the largest over every landing (the envelope of all
     # of them, recomputed here from the rows); the load_references table gives each with the landing it came from,
