@@ -29,7 +29,7 @@ from .rigid_body import free_flight, quat_matrix, quat_rate
 from .stability import hanging_margin, quiescence_momenta, quiescence_update, stable_by_energy, tipping_margins
 from .legs import TELESCOPING, at_set, folded, free_footpad, leg_force, lift_shape, member_strike, slack
 from .telescoping_leg import aim
-from .terrain import clearance
+from .terrain import FACE_GAP, clearance
 from .vec3 import cross, mtv, mv
 
 # Dormand-Prince 5(4).
@@ -67,7 +67,6 @@ TOUCH = 2           # armed[i]: a leg placed on the surface before the run, whic
 BAND = 1e-4         # m: the default grazing band (ctl[C_BAND]): an unarmed leg on the ground lifts off only this far
                     # past zero, where it carries no force (grazing contact never chatters); see _events
 GRAZE_SPEED = 50.0  # m/s: the band must take a footpad this fast more than event_tol to cross (Controls)
-FACE_GAP = 1e-3     # m: a footpad touching down this far above the surface under it met a vertical face
 PATH_FLOOR = 100.0  # event_tol: steps this short or shorter skip the footpad path error (_error_norm)
 
 # Compiled functions that only compiled code calls (they take bundles, which Python cannot build): no Python or C
@@ -246,6 +245,8 @@ def _events(S, y, W, g, band):
     for i in range(n):
         if contact[i]:
             g[i] = slack(geo, cells, i, mem[i], dt[i], W.Xt[i], W.Pt[i], R) - mt[i, 1]
+            if armed[i] == FRESH and S.sliding[i] == FACE:   # caught on a face: held for a step (_accept)
+                g[i] = max(g[i], 0.0)
         else:
             foot = free_footpad(geo, cells, i, mem[i], shape[i], y[0:3], R)
             g[i] = foot[2] - pad_ground(mu, y, i, n, geo[9], foot[0], foot[1])
@@ -871,8 +872,11 @@ def _accept(S, T, W, H, y, t, h_acc, forced):
     # It stays LOCKED until it touches again (the band past zero), whatever its height: a touchdown is located
     # to within event_tol, so the footpad may hang above the terrain by more than ARM, and re-arming it
     # there would let it touch and leave again at the same instant.
+    # So does a footpad caught on a vertical face that its leg pulls off it: _events holds it there for its
+    # first step (FRESH), since one dragged along the face, its footpad pulled off it by the drag while its free
+    # footpad still moves into the face, would otherwise touch and leave again at one instant without end.
     for i in range(n):
-        if contact[i] and W.mt[i, 1] > 0.0 and g_prev[i] <= 0.0:
+        if contact[i] and (W.mt[i, 1] > 0.0 or sliding[i] == FACE) and g_prev[i] <= 0.0:
             _switch(S, y, i, W)
             armed[i] = LOCKED
             _rhs(S, y, K[0], W)
