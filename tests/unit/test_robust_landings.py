@@ -133,6 +133,20 @@ def test_mixed_landings_that_failed_land(k):
 
 
 @pytest.mark.skipif(ROOT is None, reason="needs the repository's benchmarks/")
+def test_cantilever_draws_are_valid_legs():
+    """The mixed sweep with --tripods draws the LM-class cantilever's cells by their names in the file: every drawn
+    primary curve ends short of the knee (TripodLeg refuses one at or past it) and the secondaries are drawn too
+    (not the file's 0.31 m strokes)."""
+    sweep = _sweep()
+    draws = [sweep.mixed(sweep.SEED, k, True) for k in range(60)]
+    legs = [cfg.scene.legs[0] for kind, cfg, _ in draws if kind == "cantilever_lm"]
+    assert len(legs) >= 5
+    for leg in legs:
+        assert leg.primary.curve.deflection[-1] < leg.secondary_attach * leg.rest_primary_length
+    assert all(leg.secondary_compression[0].curve.deflection[-1] != 0.31 for leg in legs)
+
+
+@pytest.mark.skipif(ROOT is None, reason="needs the repository's benchmarks/")
 def test_seeded_mixed_landings_never_fail():
     """24 landings of the mixed sweep (leg kinds, footpad masses, soils, rocks and steps, gravity, drawn cell
     curves), 0.3 s each."""
