@@ -29,7 +29,7 @@ from .rigid_body import free_flight, quat_matrix, quat_rate
 from .stability import hanging_margin, quiescence_momenta, quiescence_update, stable_by_energy, tipping_margins
 from .legs import TELESCOPING, at_set, folded, free_footpad, leg_force, lift_shape, member_strike, slack
 from .telescoping_leg import aim
-from .terrain import clearance
+from .terrain import FACE_GAP, clearance
 from .vec3 import cross, mtv, mv
 
 # Dormand-Prince 5(4).
@@ -64,10 +64,10 @@ LOCKED = -1         # armed[i]: a leg that left at once on touching, or at the e
 FRESH = -2          # armed[i]: a leg that has just touched down; leaving before a step longer than event_tol, LOCKED
 BANDED = -3         # armed[i]: a leg that left short of its set (the grazing band) touches again the band past zero
 TOUCH = 2           # armed[i]: a leg placed on the surface before the run, which touches down as the run starts
+TOUCHED = 2         # sliding[i]: a massless footpad that has just touched down, sliding on mu_D until its first commit
 BAND = 1e-4         # m: the default grazing band (ctl[C_BAND]): an unarmed leg on the ground lifts off only this far
                     # past zero, where it carries no force (grazing contact never chatters); see _events
 GRAZE_SPEED = 50.0  # m/s: the band must take a footpad this fast more than event_tol to cross (Controls)
-FACE_GAP = 1e-3     # m: a footpad touching down this far above the surface under it met a vertical face
 PATH_FLOOR = 100.0  # event_tol: steps this short or shorter skip the footpad path error (_error_norm)
 
 # Compiled functions that only compiled code calls (they take bundles, which Python cannot build): no Python or C
@@ -246,6 +246,8 @@ def _events(S, y, W, g, band):
     for i in range(n):
         if contact[i]:
             g[i] = slack(geo, cells, i, mem[i], dt[i], W.Xt[i], W.Pt[i], R) - mt[i, 1]
+            if armed[i] == FRESH and S.sliding[i] == FACE:   # caught on a face: held for a step (_accept)
+                g[i] = max(g[i], 0.0)
         else:
             foot = free_footpad(geo, cells, i, mem[i], shape[i], y[0:3], R)
             g[i] = foot[2] - pad_ground(mu, y, i, n, geo[9], foot[0], foot[1])
@@ -431,7 +433,7 @@ def _switch(S, y, which, W):
                 pad = free_footpad(geo, cells, which, mem[which], shape[which], y[0:3], R)
         P[which, 0], P[which, 1], P[which, 2] = pad[0], pad[1], pad[2] if on_face else top
         contact[which] = 1
-        sliding[which] = FACE if on_face else 1                 # (re)contact slides on mu_D (eq. 33)
+        sliding[which] = FACE if on_face else TOUCHED           # (re)contact slides on mu_D (eq. 33)
         _leg_force_call(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R, v, y[10:13], dt[which],
                         ft[which], rt[which], Xt[which])
         pad_switch(mu, y, which, P, sliding, True, Xt, R, geo[9])
@@ -839,13 +841,15 @@ def _accept(S, T, W, H, y, t, h_acc, forced):
     # A massless footpad's slide does not stop in a step of event_tol or less: where its last slide ended its push
     # sits at the dynamic limit, so such a step (an event at its start) reads it as stopped, and two slides then
     # restarted each other at one instant. It stops in the first longer step that finds its push below the limit.
-    # Not so a footpad that has just touched down (FRESH), which slides on mu_D only until its first commit.
+    # Not so a footpad that has just touched down (TOUCHED), which slides on mu_D only until its first commit;
+    # after that its slides go by this rule too, even before its first step longer than event_tol (two legs
+    # touching together at a free-play cell's corner traded a slide at one instant while both were FRESH).
     short = h_acc <= ctl[C_EVENTTOL] and slides_by_position(S.mu, contact, sliding)
     before = sliding.copy() if short else sliding
     changed = _apply(S, W, y, T.g1, forced)
     if short:
         for i in range(n):
-            if contact[i] and armed[i] != FRESH and before[i] == 1 and sliding[i] == 0:
+            if contact[i] and before[i] == 1 and sliding[i] == 0:
                 sliding[i] = 1
     k = cnt[K_HIST]                                # record as committed (a switching leg: before it)
     if k > 0 and t <= H.t[k - 1]:
@@ -871,8 +875,11 @@ def _accept(S, T, W, H, y, t, h_acc, forced):
     # It stays LOCKED until it touches again (the band past zero), whatever its height: a touchdown is located
     # to within event_tol, so the footpad may hang above the terrain by more than ARM, and re-arming it
     # there would let it touch and leave again at the same instant.
+    # So does a footpad caught on a vertical face that its leg pulls off it: _events holds it there for its
+    # first step (FRESH), since one dragged along the face, its footpad pulled off it by the drag while its free
+    # footpad still moves into the face, would otherwise touch and leave again at one instant without end.
     for i in range(n):
-        if contact[i] and W.mt[i, 1] > 0.0 and g_prev[i] <= 0.0:
+        if contact[i] and (W.mt[i, 1] > 0.0 or sliding[i] == FACE) and g_prev[i] <= 0.0:
             _switch(S, y, i, W)
             armed[i] = LOCKED
             _rhs(S, y, K[0], W)

@@ -29,6 +29,8 @@ PLANE, STEP, HEMISPHERE, BOX, HEIGHT_FIELD = -1, 0, 1, 2, 3
 FIELD_HEAD = 6
 FOOT = 85.0                                      # deg: slope of a hemisphere's foot, where it meets the ground
 FOOT_SIN, FOOT_COS = float(np.sin(np.radians(FOOT))), float(np.cos(np.radians(FOOT)))
+FACE_GAP = 1e-3                                  # m: a footpad this far above the surface under it is on a face
+ACROSS = 1e-9                                    # m: a face's far side is probed this far across it
 
 
 @dataclass(frozen=True)
@@ -242,6 +244,47 @@ def relief(packed, x: float, y: float):
 def clearance(packed, p0: float, p1: float, p2: float) -> float:
     """Vertical clearance p2 - height(p0, p1) of the point p."""
     return p2 - height(packed, p0, p1)
+
+
+@njit(cache=True)
+def face_normal(packed, x: float, y: float, z: float):
+    """(found, n0, n1): the outward horizontal unit normal of the vertical face nearest (x, y) whose far side rises
+    above z, a step's riser or a box's side (at a box's corner the direction from it), the face a footpad at
+    (x, y, z) held on it bears on."""
+    steps, _, boxes, _ = packed
+    near, n0, n1 = np.inf, 0.0, 0.0
+    for i in range(steps.shape[0]):
+        c, s = steps[i, 2], steps[i, 3]
+        d = c * (y - steps[i, 1]) - s * (x - steps[i, 0])            # distance left of the edge
+        m0, m1 = (-s, c) if d >= 0.0 else (s, -c)
+        a = abs(d) + ACROSS
+        if abs(d) < near and height(packed, x - a * m0, y - a * m1) > z:
+            near, n0, n1 = abs(d), m0, m1
+    for i in range(boxes.shape[0]):
+        c, s = boxes[i, 2], boxes[i, 3]
+        dx, dy = x - boxes[i, 0], y - boxes[i, 1]
+        a, b = c * dx + s * dy, c * dy - s * dx                         # along, across the yaw
+        ea, eb = a - min(max(a, -boxes[i, 4]), boxes[i, 4]), b - min(max(b, -boxes[i, 5]), boxes[i, 5])
+        d = np.sqrt(ea * ea + eb * eb)                                  # from the box's footprint
+        if not 0.0 < d < near:
+            continue
+        m0, m1 = (c * ea - s * eb) / d, (s * ea + c * eb) / d
+        if height(packed, x - (d + ACROSS) * m0, y - (d + ACROSS) * m1) > z:
+            near, n0, n1 = d, m0, m1
+    return near < np.inf, n0, n1
+
+
+@njit(cache=True)
+def bearing_normal(packed, x: float, y: float, z: float):
+    """(n0, n1, n2): the unit outward normal of the terrain a footpad at (x, y, z) bears on: on the surface (within
+    FACE_GAP above it, or below it on soil) the relief's; higher, held on a vertical face beside it (a step's riser, a
+    box's side), that face's."""
+    if not is_plane(packed) and z - height(packed, x, y) > FACE_GAP:
+        found, n0, n1 = face_normal(packed, x, y, z)
+        if found:
+            return n0, n1, 0.0
+    _, n0, n1, n2 = relief(packed, x, y)
+    return n0, n1, n2
 
 
 @njit(cache=True)

@@ -42,7 +42,7 @@ from numba import njit
 
 from .crush_cell import CellModel
 from .telescoping_leg import cell_force
-from .terrain import relief
+from .terrain import bearing_normal
 from .vec3 import cross, mtv, mv
 
 MIN_DET = 0.02   # least |u . (e1 x e2)| of the strut directions at the joint (1 when orthogonal, 0 when coplanar)
@@ -486,10 +486,11 @@ def at_set(geo, cells, i, mem, shape):
 @njit(cache=True)
 def slack(geo, cells, i, mem, defl, X, P, R):
     """The ground's normal push on tripod leg i's footpad over its primary's unloading rate (m): the leg lifts off
-    where it falls through zero, the footpad pulled off the terrain (the surface's normal under P, terrain.relief;
-    X the force on the capsule, principal axes)."""
+    where it falls through zero, the footpad pulled off the terrain (the normal of the surface under P, or of the
+    vertical face a footpad caught beside it is held on: terrain.bearing_normal; X the force on the capsule,
+    principal axes)."""
     f0, f1, f2 = mv(R, X[0], X[1], X[2])
-    _, n0, n1, n2 = relief(geo[9], P[0], P[1])
+    n0, n1, n2 = bearing_normal(geo[9], P[0], P[1], P[2])
     return (f0 * n0 + f1 * n1 + f2 * n2) / cells[3][i, 0]
 
 

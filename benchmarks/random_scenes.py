@@ -6,8 +6,9 @@ report's telescoping configuration 1, its articulated configuration 5, or the lu
 massless footpads or 1-50 kg ones 0.2-0.8 m across on rigid ground or a shipped soil, 0-2 rocks or steps within
 the leg span, gravity from 1e-6 m/s^2 to 1.5 g0, every cell's loading curve (3-6 points, some with a first point
 of 1e-9 N: free play), and non-slip friction in a fifth of the landings; then the slope, velocity, attitude,
-roll rate and friction of random_landing; --tripods adds the lunar tripod example's legs to the kinds
-(footpads of 1-50 kg: massless tripod footpads that can slip are refused). A bottomed cell does not end these
+roll rate and friction of random_landing; --tripods adds the lunar tripod example's legs and the LM-class
+cantilever's to the kinds (footpads of 1-50 kg: massless tripod footpads that can slip are refused; the
+cantilever's primary curve ends short of its knee). A bottomed cell does not end these
 landings (its stiff ramp is part of what they test). Without it the sweep is about configuration 1: massless footpads on
 the plane, or one random step or rock within the leg span (--terrain), footpads of that mass (--footpad-mass),
 that shipped soil under nominal 0.5 m footpads (--soil, needs --footpad-mass).
@@ -26,6 +27,7 @@ import json
 import os
 import platform
 import time
+import tomllib
 from collections import Counter, defaultdict
 from concurrent.futures import ProcessPoolExecutor
 from functools import cache
@@ -43,10 +45,11 @@ SCENES = ROOT / "examples" / "affdl-tr-66-33" / "scenes"
 BASE = SCENES / "telescoping_config1.toml"
 KINDS = {"telescoping_1966": BASE, "articulated_1966": SCENES / "articulated_config5.toml",
          "telescoping_lunar": ROOT / "examples" / "lunar_lander.toml"}
-# with --tripods: also the lunar tripod example's legs (footpads always with mass: massless ones that can slip are
-# refused); the kind is then drawn among all four, so the draws differ from the sweep without them. (A cantilever's
-# drawn primary curve may run past its knee, which is refused: no cantilever here.)
-TRIPOD_KINDS = {"tripod_lunar": ROOT / "examples" / "lunar_tripod.toml"}
+# with --tripods: also the lunar tripod example's legs and the LM-class cantilever's (footpads always with mass:
+# massless ones that can slip are refused); the kind is then drawn among all five, so the draws differ from the
+# sweep without them. A cantilever's primary curve is drawn short of its knee (a stroke past it is refused).
+TRIPOD_KINDS = {"tripod_lunar": ROOT / "examples" / "lunar_tripod.toml",
+                "cantilever_lm": ROOT / "examples" / "lm_class.toml"}
 SEED = 20261121
 PAD_DIAMETER = 0.5                  # m: a nominal footpad (the report gives none for configuration 1)
 HELD_SHARE = 0.2                    # landings kept on non-slip friction (the report's 1.5e6 / 1.0e6)
@@ -63,8 +66,17 @@ def mixed(seed: int, k: int, tripods: bool = False) -> tuple[str, SceneConfig, d
     kinds = {**KINDS, **TRIPOD_KINDS} if tripods else KINDS
     kind = list(kinds)[int(rng.integers(len(kinds)))]
     base = _base(kinds[kind])
-    cells = {name: cell for names, leg in zip(base.cell_names, base.scene.legs) for name, cell in zip(names, leg.cells)}
-    over = mixed_overrides(rng, cells, tuple(soil_presets()), massless=kind not in TRIPOD_KINDS)
+    limits = {}
+    if kind in TRIPOD_KINDS:     # the cells by their names in the file (a tripod's secondaries share two)
+        leg, named = base.scene.legs[0], tomllib.loads(kinds[kind].read_text())["legs"]
+        cells = {named["primary"]: leg.primary, named["secondary_compression"]: leg.secondary_compression[0],
+                 named["secondary_tension"]: leg.secondary_tension[0]}
+        if leg.is_cantilever:
+            limits[named["primary"]] = leg.secondary_attach * leg.rest_primary_length
+    else:
+        cells = {name: cell for names, leg in zip(base.cell_names, base.scene.legs)
+                 for name, cell in zip(names, leg.cells)}
+    over = mixed_overrides(rng, cells, tuple(soil_presets()), massless=kind not in TRIPOD_KINDS, max_strokes=limits)
     cfg = read_scene(kinds[kind], over)
     scene = random_landing(cfg.scene, seed, k)
     if rng.uniform() < HELD_SHARE:

@@ -77,9 +77,16 @@ def _number(value: Any, sign: Sign) -> float:
     return float(value)
 
 
-def Number(sign: Sign = "positive") -> PlainValidator:  # noqa: N802 - a type's validator
-    """A plain number (no unit) of a magnitude units.RANGES["dimensionless"] allows: `Annotated[float, Number()]`."""
-    return PlainValidator(lambda v: _number(v, sign))
+def _at_most(value: float, most: float | None) -> float:
+    if most is not None and value > most:
+        raise refuse(f"a number of at most {most:g}")
+    return value
+
+
+def Number(sign: Sign = "positive", most: float | None = None) -> PlainValidator:  # noqa: N802 - a type's validator
+    """A plain number (no unit) of a magnitude units.RANGES["dimensionless"] allows, at most `most` if given:
+    `Annotated[float, Number()]`."""
+    return PlainValidator(lambda v: _at_most(_number(v, sign), most))
 
 
 def _integer(value: Any, minimum: int, maximum: int) -> int:

@@ -60,14 +60,15 @@ def _q(x: float, unit: str) -> str:
     return f"{float(x)!r} {unit}"
 
 
-def random_curve(rng: np.random.Generator, cell: CellModel) -> dict:
-    """A cell table (TOML values, SI) about `cell`: 3 to 6 points over 0.5-1.5 x its stroke, a first point at
+def random_curve(rng: np.random.Generator, cell: CellModel, max_stroke: float = np.inf) -> dict:
+    """A cell table (TOML values, SI) about `cell`: 3 to 6 points over 0.5-1.5 x its stroke (short of
+    `max_stroke`, m: a cantilever's primary strokes below its knee), a first point at
     0.5-10 % of the stroke carrying 0.3-1 x the force level (or, in NEAR_DEGENERATE of the draws, 1e-9 to 1e-6 N:
     a leg with free play), stages at 0.8-1.3 x the level (mostly rising, dips allowed), a last point at 1.5-3 x (the
     bottoming ramp); level 0.5-1.5 x the cell's largest force short of its ramp; unloading rate 1-2 x the
     steepest segment (or the cell's own rate if that is larger), the cell's damping."""
     d, f = cell.curve.deflection, cell.curve.force
-    stroke = d[-1] * rng.uniform(0.5, 1.5)
+    stroke = d[-1] * rng.uniform(0.5, min(1.5, max_stroke / d[-1]))
     level = max(f[:-1] if len(f) > 2 else f) * rng.uniform(0.5, 1.5)
     m = int(rng.integers(3, 7))
     first = stroke * rng.uniform(0.005, 0.1)
@@ -82,11 +83,12 @@ def random_curve(rng: np.random.Generator, cell: CellModel) -> dict:
 
 
 def mixed_overrides(rng: np.random.Generator, cells: dict[str, CellModel], soils: tuple[str, ...],
-                    massless: bool = True) -> dict:
+                    massless: bool = True, max_strokes: dict[str, float] | None = None) -> dict:
     """Overrides of a base scene (dotted key -> TOML value) for a mixed sweep: footpads massless (a third of the
     draws; never with `massless` False, for legs whose footpads need mass) or of 1-50 kg, 0.2-0.8 m across; with
     mass, rigid ground or one of `soils` (equally likely); gravity log-uniform from G_LEAST to 1.5 g0; every cell of
-    `cells` (name -> its model) redrawn (random_curve)."""
+    `cells` (its name in the file's [cells] -> its model) redrawn (random_curve), short of its stroke limit in
+    `max_strokes` (name -> m) if it has one."""
     over: dict = {}
     mass = 0.0 if massless and rng.uniform() < 1.0 / 3.0 else rng.uniform(1.0, 50.0)
     diameter = rng.uniform(0.2, 0.8)
@@ -97,6 +99,6 @@ def mixed_overrides(rng: np.random.Generator, cells: dict[str, CellModel], soils
         over["terrain.soil"] = soils[ground - 1]
     over["scene.gravity"] = _q(np.exp(rng.uniform(np.log(G_LEAST), np.log(1.5 * G0))), "m/s^2")
     for name, cell in sorted(cells.items()):
-        for key, value in random_curve(rng, cell).items():
+        for key, value in random_curve(rng, cell, (max_strokes or {}).get(name, np.inf)).items():
             over[f"cells.{name}.{key}"] = value
     return over

@@ -177,6 +177,8 @@ def test_crushing_force_change_reaches_landings_envelopes_and_checks(tmp_path):
     ({'[members.upper_tube]\n': '[members.upper_tube]\ncolumn_length = "1 m"\n'}, "members.upper_tube.column_length:"),
     ({"[structure]\n": "[structure]\nbearing = 1\n"}, "structure"),
     ({'slope = "12 deg"': 'slope = ["0 deg", "-12 deg"]'}, "requirements.envelope.slope"),
+    # a scatter whose normal force factors go negative (runs that cannot start): refused as read, not as run
+    ({"cell_scatter = 0.05": "cell_scatter = 5e10"}, "requirements.monte_carlo.cell_scatter"),
 ])
 def test_bad_lander_file_exits_2_naming_the_key(tmp_path, capsys, subs, key):
     p = variant(tmp_path, subs)

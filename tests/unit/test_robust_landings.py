@@ -14,6 +14,7 @@ from alightsize.landings.random_landings import random_landing
 from alightsize.model.scene_config import read_scene
 from alightsize.pipeline.lander import read_lander
 from alightsize_sim.landing import simulate
+from alightsize_sim.terrain import Box, Step, Terrain
 
 EXAMPLES = data_dir("examples")
 ROOT = EXAMPLES.parent if (EXAMPLES.parent / "benchmarks").is_dir() else None
@@ -54,6 +55,52 @@ def test_free_play_axial_cell_with_footpad_mass_lands():
         _lands(cfg)
 
 
+def test_free_play_axial_cell_with_massless_footpads_lands():
+    """The same free-play cell with massless footpads: corners 13 and 29 failed at t = 0, the two legs that touch
+    first (both FRESH) trading a slide at one instant, each one's slide start read as the other's stop."""
+    over = {"cells.axial.deflection": ["0 m", "0.01 m", "0.02 m", "0.45 m", "0.46 m"],
+            "cells.axial.force": ["0 kN", "1e-12 kN", "8 kN", "8 kN", "40 kN"],
+            "requirements.monte_carlo.samples": 0, "controls.t_final": "2 s"}
+    for cfg in _cases("lunar_lander.toml", over, {"corner-13", "corner-29"}):
+        assert cfg.scene.footpad_mass == 0.0
+        _lands(cfg)
+
+
+# Two lunar tripod landings of the mixed sweep with --tripods before the cantilever joined it (seed 20261121, k 166
+# and 256): 36 and 39 kg footpads, gravity 1.7e-5 and 4.8e-4 m/s^2, a drawn primary curve, a box (and a step) in
+# the leg span. The overrides and terrain as that sweep drew them; attitude, velocity and friction: random_landing.
+FACE_LANDINGS = {
+    166: ({"legs.footpad_mass": "35.94371005926497 kg", "scene.gravity": "1.6540701309391667e-05 m/s^2",
+           "cells.primary.deflection": ["0.0 m", "0.04612324327634216 m", "0.4760169436805531 m"],
+           "cells.primary.force": ["0.0 N", "20575.373030750907 N", "42409.899099814575 N"],
+           "cells.primary.unloading_rate": "1600000.0 N/m"},
+          Terrain(steps=(Step(0.7680642228267075, -0.8569238726929771, 241.36893139020157, 0.5184694665610386),),
+                  boxes=(Box(0.7059355306350662, -0.020191116200949096, 1.2031573161114737, 0.4715264524583508,
+                             0.5052192958034643, 122.53441832437848),))),
+    256: ({"legs.footpad_mass": "38.82170613793784 kg", "scene.gravity": "0.000477661811596969 m/s^2",
+           "cells.primary.deflection": ["0.0 m", "0.03245387955063695 m", "0.42978121353054466 m",
+                                        "0.7419557938534724 m", "0.7462743735783968 m"],
+           "cells.primary.force": ["0.0 N", "12973.853352464428 N", "17824.51638033125 N", "13998.178445765418 N",
+                                   "26169.861790625808 N"],
+           "cells.primary.unloading_rate": "3426427.3678421695 N/m"},
+          Terrain(boxes=(Box(0.20187093445859808, 0.1529627005541292, 0.8170738368658308, 0.5928226067058477,
+                             0.3806100659729629, 113.47004964119915),))),
+}
+
+
+@pytest.mark.parametrize("k", sorted(FACE_LANDINGS))
+def test_tripod_footpad_caught_on_a_face_lands(k):
+    """A tripod footpad swept into a step's riser (166) or a box's side (256) was caught on the face and left it
+    at the instant it touched (its push measured along the ground's normal, not the face's; in 256 a leg dragged
+    along the face, pulled off it by the drag while its free footpad still moved into it), then met the face again
+    at once, until the stall guard. Run to 1 s."""
+    over, terrain = FACE_LANDINGS[k]
+    cfg = read_scene(EXAMPLES / "lunar_tripod.toml", over)
+    scene = dataclasses.replace(random_landing(cfg.scene, 20261121, k), terrain=terrain)
+    _lands(dataclasses.replace(cfg, scene=scene, controls=dataclasses.replace(cfg.controls, t_final=1.0,
+                                                                             stop_on_bottoming=False)))
+
+
 def test_slides_stopped_by_an_empty_step_land():
     """Landing 870 of the configuration-1 sweep (benchmarks/random_scenes.py, seed 20261121; massless footpads,
     mu_D 0.70): legs 1 and 3 slid at their dynamic limit; an event at a step's start stopped both where their
@@ -83,6 +130,20 @@ def test_mixed_landings_that_failed_land(k):
     assert r["kind"] == "articulated_1966"
     assert r["status"] != "failed" and r["finite"], f"landing {k}: {r}"
     assert r["closure_rel"] < CLOSURE
+
+
+@pytest.mark.skipif(ROOT is None, reason="needs the repository's benchmarks/")
+def test_cantilever_draws_are_valid_legs():
+    """The mixed sweep with --tripods draws the LM-class cantilever's cells by their names in the file: every drawn
+    primary curve ends short of the knee (TripodLeg refuses one at or past it) and the secondaries are drawn too
+    (not the file's 0.31 m strokes)."""
+    sweep = _sweep()
+    draws = [sweep.mixed(sweep.SEED, k, True) for k in range(60)]
+    legs = [cfg.scene.legs[0] for kind, cfg, _ in draws if kind == "cantilever_lm"]
+    assert len(legs) >= 5
+    for leg in legs:
+        assert leg.primary.curve.deflection[-1] < leg.secondary_attach * leg.rest_primary_length
+    assert all(leg.secondary_compression[0].curve.deflection[-1] != 0.31 for leg in legs)
 
 
 @pytest.mark.skipif(ROOT is None, reason="needs the repository's benchmarks/")
