@@ -194,11 +194,16 @@ def _samples(spec: SynthesisSpec) -> dict:
 
 def _trade_context(ev: Evaluator, axis: str, value: float) -> dict:
     """The envelope with its horizontal-speed limit (the low speed kept, or 0) or its slope magnitude set to
-    `value` (a signed slope range scaled to it, so an into-the-slope envelope stays one)."""
-    env = ev.lander([p.start for p in ev.free]).requirements.envelope
+    `value` (a signed slope range scaled to it, so an into-the-slope envelope stays one); an envelope the file
+    cannot have at `value` (a sloped envelope's limit not spanning it) is an InputError here, not a point of
+    invalid candidates."""
+    start = [p.start for p in ev.free]
+    env = ev.lander(start).requirements.envelope
     if axis == "slope":
         lo, hi = env.slope
         m = max(abs(lo), abs(hi))
         rng = (lo * value / m, hi * value / m) if m > 0 else (-value, value)
         return {TRADE_KEYS[axis]: [f"{rng[0]!r} rad", f"{rng[1]!r} rad"]}
-    return {TRADE_KEYS[axis]: [f"{min(env.horizontal_speed[0], value)!r} m/s", f"{value!r} m/s"]}
+    context = {TRADE_KEYS[axis]: [f"{min(env.horizontal_speed[0], value)!r} m/s", f"{value!r} m/s"]}
+    ev.lander(start, context)
+    return context

@@ -123,3 +123,20 @@ def test_a_bad_limit_is_refused_at_its_key(tmp_path, limit, key):
     with pytest.raises(InputError) as e:
         alightsize.read_lander(variant(tmp_path, limit))
     assert f"requirements.envelope.{key}:" in str(e.value)
+
+
+def test_a_trade_point_beyond_the_limits_span_is_refused_not_infeasible(tmp_path):
+    # The lunar example trades horizontal speeds up to 4 kn (2.06 m/s): a limit spanning 0 to 1 m/s cannot
+    # have that point, which must exit 2 naming the limit rather than search candidates that are all invalid;
+    # 1 kn (0.51 m/s) is within the span and gives the range [0, 0.514...] m/s.
+    from alightsize.synthesis.evaluate import Evaluator
+    from alightsize.synthesis.search import _trade_context
+    from alightsize.synthesis.spec import read_synthesis
+    spec = read_synthesis(variant(tmp_path, SLOPED))
+    ev = Evaluator(spec.path, spec.free, tmp_path / "out")
+    assert _trade_context(ev, "horizontal_speed", 0.5144) == {
+        "requirements.envelope.horizontal_speed": ["0.0 m/s", "0.5144 m/s"]}
+    with pytest.raises(InputError) as e:
+        _trade_context(ev, "horizontal_speed", 2.0578)
+    assert "requirements.envelope.vertical_speed_limit:" in str(e.value)
+    ev.close()
