@@ -162,9 +162,14 @@ def synthesize(path: str | Path | SynthesisSpec, out: str | Path, start: dict[st
     check_rows: list[dict] = []
     if spec.check_samples:
         log(f"re-check of the winner on {spec.check_samples} fresh landings (seed {spec.check_seed})")
-        fresh = ev.lander(best.x, {"requirements.monte_carlo.samples": spec.check_samples,
-                                   "requirements.monte_carlo.seed": spec.check_seed})
-        check_rows = ev.rows(fresh, [r for r in fresh.study.runs if not r.run_id.startswith(CORNER)])
+        searched_kg = best_ev.weight_kg
+        fresh = {"requirements.monte_carlo.samples": spec.check_samples,
+                 "requirements.monte_carlo.seed": spec.check_seed}
+        best_ev, best_res, fresh_rows = ev.design(best.x, fresh, margin=False)     # the requirement, as design
+        check_rows = [r for r in fresh_rows if not r["run_id"].startswith(CORNER)]
+        if searched_kg is not None and best_ev.weight_kg is not None:
+            log(f"  its members sized on its corners and the fresh landings: {best_ev.weight_kg:.4g} kg "
+                f"(on the search's sample: {searched_kg:.4g} kg)")
     result = SynthesisResult(spec, history, start_ev, best_ev, start_res, best_res,
                              pass_rates(start_rows, criteria), pass_rates(best_rows, criteria),
                              pass_rates(check_rows, criteria), best_rows, check_rows)
