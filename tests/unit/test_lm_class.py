@@ -60,9 +60,9 @@ def test_lunar_gravity_and_the_lm_mass(lander):
 
 def test_the_lm_sloped_envelope_and_its_2_ft_terrain(lander):
     # TN D-6850: 10 ft/s (3.048 m/s) down at rest to 7 ft/s (2.134 m/s) down at 4 ft/s (1.219 m/s) across, to the
-    # file's rounding (3.05, 2.13, 1.22 m/s: to 0.01 m/s, so within 0.005); the speed corners are that region's 4 vertices (no
-    # landing at the box's 3.05 m/s down and 1.22 m/s across) and every Monte Carlo landing lies below the limit
-    # (1e-12 m/s of round-off); the 2 ft (0.6096 m) rock lands the two vertices on the limit.
+    # file's rounding (3.05, 2.13, 1.22 m/s: to 0.01 m/s, so within 0.005); the speed corners are that region's 4
+    # vertices (no landing at the box's 3.05 m/s down and 1.22 m/s across) and every Monte Carlo landing lies below
+    # the limit (1e-12 m/s of round-off); the 2 ft (0.6096 m) rock lands the two vertices on the limit.
     def speed(r, i):
         return abs(float(r.overrides[f"initial.velocity[{i}]"].split()[0]))
 
