@@ -143,7 +143,8 @@ def _synthesize(args, stage: Stage) -> int:
     b, st = res.best, res.stats
     every = res.check_rates[-1] if res.check_rates else None
     print(f"{'PASS' if res.ok else 'FAIL'}: " + (f"lightest feasible system {100 * b.fraction:.3f} % of the capsule "
-          f"({b.weight_kg:.4g} kg; start {100 * res.start.fraction:.3f} %)" if b.feasible
+          f"({b.weight_kg:.4g} kg; start {100 * res.start.fraction:.3f} %"
+          f"{' on the search sample' if res.check_rates else ''})" if b.feasible
           else "no candidate met every criterion within the bounds"))
     if every is not None:
         print(f"  fresh check: {every.passed} of {every.n} landings meet every criterion "

@@ -10,6 +10,7 @@ study draws from `numpy.random.default_rng([seed, k])` in the declared order, so
 from __future__ import annotations
 
 from dataclasses import dataclass
+from math import sqrt
 from typing import Any, Literal
 
 import numpy as np
@@ -46,6 +47,10 @@ class Dispersion:
         """One sample as a scene value: "x unit" (x a float), a number, or per-cell nested lists."""
         return self._scene_value(self.draw(rng, cells if self.per_cell else ()))
 
+    def draws(self, rng: np.random.Generator, cells: tuple[int, int] | None = None) -> dict:
+        """One sample as {key: scene value}."""
+        return {self.key: self.value(rng, cells)}
+
     def centre(self, cells: tuple[int, int] | None = None):
         """The distribution's centre (the mean, or the middle of a uniform range) as a scene value."""
         mid = (self.params[0] + self.params[1]) / 2 if self.dist == "uniform" else self.params[0]
@@ -55,6 +60,47 @@ class Dispersion:
         if self.per_cell:
             return [[float(v) for v in row] for row in x]
         return f"{float(x)!r} {self.unit}" if self.unit else float(x)
+
+
+@dataclass(frozen=True)
+class SpeedRegion:
+    """Descent and horizontal speeds drawn jointly and uniformly over the region between the descent speed `low`
+    and the piecewise-linear largest descent speed `upper` ((horizontal, descent) points, m/s, horizontal
+    ascending, each descent >= low), by inverting the horizontal speed's marginal CDF (density proportional to
+    upper - low; exact for a piecewise-linear edge) and drawing the descent uniformly below the edge there. It
+    takes two uniforms, descent's first: over a box (a flat `upper`) it draws exactly what uniform dispersions of
+    the descent (negative, `descent_key`) and horizontal speeds in that order draw."""
+
+    descent_key: str
+    horizontal_key: str
+    upper: tuple[tuple[float, float], ...]
+    low: float
+    per_cell: bool = False
+
+    def draws(self, rng: np.random.Generator, cells: tuple[int, int] | None = None) -> dict:
+        u_descent, u_horizontal = rng.random(), rng.random()
+        h, top = self._horizontal(u_horizontal)
+        v = -top + (-self.low - -top) * u_descent          # as rng.uniform(-top, -low) draws
+        return {self.descent_key: f"{float(v)!r} m/s", self.horizontal_key: f"{float(h)!r} m/s"}
+
+    def _horizontal(self, u: float) -> tuple[float, float]:
+        """(horizontal speed, largest descent speed there) at marginal CDF value u."""
+        (h_lo, top), (h_hi, _) = self.upper[0], self.upper[-1]
+        heights = [v - self.low for _, v in self.upper]
+        if len(set(heights)) == 1:                         # a flat edge (a box; also a line): uniform
+            return h_lo + (h_hi - h_lo) * u, top           # as rng.uniform(h_lo, h_hi) draws
+        areas = [(h1 - h0) * (y0 + y1) / 2 for (h0, _), (h1, _), y0, y1
+                 in zip(self.upper, self.upper[1:], heights, heights[1:])]
+        s = u * sum(areas)
+        for ((h0, v0), (h1, v1)), y0, y1, a in zip(zip(self.upper, self.upper[1:]), heights, heights[1:], areas):
+            if s <= a or (h1, v1) == self.upper[-1]:
+                w = h1 - h0                                # area below the edge from h0 to h0 + x:
+                k = (y1 - y0) / (2 * w)                    # y0 x + k x^2 = s, its root in [0, w] written stably
+                root = sqrt(max(y0 * y0 + 4 * k * s, 0.0))
+                x = min(max(2 * s / (y0 + root), 0.0), w) if y0 + root > 0 else 0.0
+                return h0 + x, v0 + (v1 - v0) * x / w
+            s -= a
+        raise AssertionError("unreachable: the last segment takes the rest")
 
 
 class _Spread(Table):

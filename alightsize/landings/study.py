@@ -36,7 +36,7 @@ from pydantic import PlainValidator, model_validator
 from alightsize.common.version import __version__
 from alightsize.common.config import SEED_MAX, Node, _describe, is_file, key_name, load_toml
 from alightsize.common.typed import Integer, Table, refuse, validate
-from alightsize.landings.dispersions import Dispersion, DispersionTable, dispersion
+from alightsize.landings.dispersions import Dispersion, DispersionTable, SpeedRegion, dispersion
 from alightsize.common.errors import InputError, InputWarning
 from alightsize.landings.criteria import Criteria, CriteriaTable
 from alightsize.landings.output import outcome
@@ -303,7 +303,8 @@ def _cell_shape(scene: SceneDocument | Path) -> tuple[int, int]:
     return len(cfg.cell_names), len(cfg.cell_names[0])
 
 
-def _sampled(points: list[tuple], dispersions: list[Dispersion], samples: int, seed: int, scenes: dict) -> list[tuple]:
+def _sampled(points: list[tuple], dispersions: list[Dispersion | SpeedRegion], samples: int, seed: int,
+             scenes: dict) -> list[tuple]:
     """Each point times `samples` Monte Carlo draws; sample k uses default_rng([seed, k]) at every point."""
     shapes = {}
     out = []
@@ -315,7 +316,7 @@ def _sampled(points: list[tuple], dispersions: list[Dispersion], samples: int, s
             for d in dispersions:
                 if d.per_cell and skey not in shapes:
                     shapes[skey] = _cell_shape(scenes[skey])
-                drawn[d.key] = d.value(rng, shapes.get(skey))
+                drawn |= d.draws(rng, shapes.get(skey))
             run_id = f"{pid}-{k:0{width}d}" if pid else f"{k:0{width}d}"
             out.append((run_id, skey, {**over, **drawn}, {**params, **drawn, "sample": k}, ref))
     return out

@@ -39,7 +39,7 @@ from alightsize.common.config import SEED_MAX, Node, load_toml
 from alightsize.common.errors import InputError
 from alightsize.common.typed import Integer, Number, Quantity, Table, refuse, validate
 from alightsize.landings.criteria import CriteriaTable
-from alightsize.landings.dispersions import Dispersion
+from alightsize.landings.dispersions import Dispersion, SpeedRegion
 from alightsize.landings.study import Run, Study, _sampled
 from alightsize.loads.config import Combined, Configuration, GridTable, LoadsConfig, Name, check_combined
 from alightsize.loads.envelopes import LegCase, default_grid
@@ -80,7 +80,7 @@ class MonteCarlo(Table):
 
 class TerrainRequirement(Table):
     """`[requirements.terrain]`: ground beyond the envelope's plane the lander must land on. Each key given adds
-    the envelope's corners of largest descent speed again on that ground (`terrain_cases`)."""
+    the envelope's corners on its largest descent speed again on that ground (`terrain_cases`)."""
 
     rock_height: Annotated[float, Quantity("length")] | None = None     # a hemispherical rock under a footpad
     hole_depth: Annotated[float, Quantity("length")] | None = None      # a footpad into a hole
@@ -173,15 +173,16 @@ def _place(x: float) -> str:
 
 
 def landing_cases(scene: SceneDocument, name: str, req: Requirements, legs: int, base: dict | None = None) -> Study:
-    """The envelope's corners (each range at both ends, a slope or inclination magnitude and the roll rate at
-    either sign, a leg leading or two legs straddling the velocity) and `samples` seeded Monte Carlo landings drawn
-    uniformly over the envelope (heading, roll and, with cell_scatter, every cell's crushing force as well); every
+    """The envelope's corners (every vertex of its speed region, `Envelope.corners`: a box's four; each other
+    range at both ends, a slope or inclination magnitude and the roll rate at either sign, a leg leading or two legs
+    straddling the velocity), `[requirements.terrain]`'s cases at the corners on the largest descent speed, and
+    `samples` seeded Monte Carlo landings drawn uniformly over the envelope (the speed region jointly, heading,
+    roll and, with cell_scatter, every cell's crushing force as well); every
     run lands the lander file's scene with the overrides `base` (a design variant) under its own."""
     base = dict(base or {})
     e, mc = req.envelope, req.monte_carlo
-    axes: dict[str, list] = {"initial.velocity[2]": [_q(-v, "m/s") for v in sorted(set(e.vertical_speed))],
-                             "initial.velocity[1]": [_q(h, "m/s") for h in sorted(set(e.horizontal_speed))],
-                             "initial.roll": ["0.0 deg", _q(180.0 / legs, "deg")]}
+    speeds = e.corners()
+    axes: dict[str, list] = {"initial.roll": ["0.0 deg", _q(180.0 / legs, "deg")]}
     signed = (("terrain.slope", tuple(map(degrees, e.slope)), "deg"),
               ("initial.inclination", tuple(map(degrees, e.inclination)), "deg"),
               ("initial.rates[2]", (-e.roll_rate, e.roll_rate), "rad/s"))
@@ -197,15 +198,14 @@ def landing_cases(scene: SceneDocument, name: str, req: Requirements, legs: int,
             axes["terrain.mu_dynamic"] = list(e.friction)
         else:                                       # one friction: the Monte Carlo lands at it too
             fixed["terrain.mu_dynamic"] = e.friction[0]
-    combos = list(itertools.product(*axes.values()))
+    combos = [({"initial.velocity[2]": _q(-v, "m/s"), "initial.velocity[1]": _q(h, "m/s"), **dict(zip(axes, c))},
+               top) for ((h, v), top), *c in itertools.product(speeds, *axes.values())]
     width = len(str(len(combos)))
-    points = [(f"corner-{n + 1:0{width}d}", "lander", {**fixed, **dict(zip(axes, c))}, dict(zip(axes, c)), None)
-              for n, c in enumerate(combos)]
-    fastest = axes["initial.velocity[2]"][-1]                                 # the largest descent speed
-    points += terrain_cases(scene, req.terrain, [p for p in points if p[2]["initial.velocity[2]"] == fastest])
-    disp = [Dispersion("initial.velocity[2]", "uniform", (-e.vertical_speed[1], -e.vertical_speed[0]), "m/s", False),
-            Dispersion("initial.velocity[1]", "uniform", e.horizontal_speed, "m/s", False),
-            Dispersion("initial.heading", "uniform", tuple(map(degrees, e.heading)), "deg", False),
+    points = [(f"corner-{n + 1:0{width}d}", "lander", {**fixed, **c}, c, None) for n, (c, _) in enumerate(combos)]
+    points += terrain_cases(scene, req.terrain, [p for p, (_, top) in zip(points, combos) if top])
+    disp: list[Dispersion | SpeedRegion] = [
+        SpeedRegion("initial.velocity[2]", "initial.velocity[1]", e.upper(), e.vertical_speed[0]),
+        Dispersion("initial.heading", "uniform", tuple(map(degrees, e.heading)), "deg", False),
             Dispersion("initial.roll", "uniform", (0.0, 360.0 / legs), "deg", False)]
     disp += [Dispersion(key, "uniform", (lo, hi), unit, False) for key, (lo, hi), unit in signed if lo != hi]
     if e.friction is not None and e.friction[0] < e.friction[1]:
@@ -219,8 +219,7 @@ def landing_cases(scene: SceneDocument, name: str, req: Requirements, legs: int,
                  for rid, skey, over, params, ref in _sampled(nominal, disp, mc.samples, mc.seed, {"lander": scene})]
     plot = ("initial.velocity[1]", "initial.velocity[2]")
     title = f"Landing cases of {name}: {len(combos)} envelope corners, {mc.samples} Monte Carlo"
-    return Study(scene.path, name, title,
-                 tuple(runs), req.criteria.criteria(), tuple(k for k in axes if k != "initial.velocity[2]"),
+    return Study(scene.path, name, title, tuple(runs), req.criteria.criteria(), ("initial.velocity[1]", *axes),
                  "initial.velocity[2]", False, mc.seed, plot)
 
 

@@ -138,12 +138,12 @@ class Evaluator:
                 for group, (_, runs) in zip(ids, groups)]
 
     def _judge(self, key: str, x, lander: Lander, runs: list[Run], rows: list[dict],
-               stage: str) -> tuple[Evaluation, DesignResult | None]:
+               stage: str, margin: bool = True) -> tuple[Evaluation, DesignResult | None]:
         """Size, check and weigh the candidate on its landed rows."""
         n = len(rows)
         bad = [r["status"] != "done" or r.get("criteria_ok") != 1 for r in rows]
         kinds = Counter(k for r in rows for k in dict.fromkeys(violation_kinds(r.get("criteria_failed"))))
-        if self.stroke_margin > 0:
+        if margin and self.stroke_margin > 0:
             limit = 1.0 - self.stroke_margin
             over = [r["status"] == "done" and stroke_used(r, lander.scene.scene.legs) > limit for r in rows]
             kinds.update({f"a cell stroked past {100 * limit:.3g} % of its stroke": sum(over)})
@@ -203,12 +203,14 @@ class Evaluator:
         known.update(out)
         return [known[k] for k in keys]
 
-    def design(self, x) -> tuple[Evaluation, DesignResult | None, list[dict]]:
-        """A candidate judged on its whole sample, with its design result and landing rows (reports)."""
-        lander = self.lander(x)
+    def design(self, x, extra: dict | None = None,
+               margin: bool = True) -> tuple[Evaluation, DesignResult | None, list[dict]]:
+        """A candidate judged on its whole sample (or the one `extra`'s overrides give; without the search's
+        stroke margin if not `margin`), with its design result and landing rows (reports)."""
+        lander = self.lander(x, extra)
         runs = list(lander.study.runs)
         rows = self.rows(lander, runs)
-        ev, res = self._judge(self.key(x), x, lander, runs, rows, "full")
+        ev, res = self._judge(self.key(x), x, lander, runs, rows, "full", margin)
         return ev, res, rows
 
     def _load(self, keys: list[str]) -> dict[str, Evaluation]:

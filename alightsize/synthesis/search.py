@@ -162,9 +162,14 @@ def synthesize(path: str | Path | SynthesisSpec, out: str | Path, start: dict[st
     check_rows: list[dict] = []
     if spec.check_samples:
         log(f"re-check of the winner on {spec.check_samples} fresh landings (seed {spec.check_seed})")
-        fresh = ev.lander(best.x, {"requirements.monte_carlo.samples": spec.check_samples,
-                                   "requirements.monte_carlo.seed": spec.check_seed})
-        check_rows = ev.rows(fresh, [r for r in fresh.study.runs if not r.run_id.startswith(CORNER)])
+        searched_kg = best_ev.weight_kg
+        fresh = {"requirements.monte_carlo.samples": spec.check_samples,
+                 "requirements.monte_carlo.seed": spec.check_seed}
+        best_ev, best_res, fresh_rows = ev.design(best.x, fresh, margin=False)     # the requirement, as design
+        check_rows = [r for r in fresh_rows if not r["run_id"].startswith(CORNER)]
+        if searched_kg is not None and best_ev.weight_kg is not None:
+            log(f"  its members sized on its corners and the fresh landings: {best_ev.weight_kg:.4g} kg "
+                f"(on the search's sample: {searched_kg:.4g} kg)")
     result = SynthesisResult(spec, history, start_ev, best_ev, start_res, best_res,
                              pass_rates(start_rows, criteria), pass_rates(best_rows, criteria),
                              pass_rates(check_rows, criteria), best_rows, check_rows)
@@ -194,11 +199,16 @@ def _samples(spec: SynthesisSpec) -> dict:
 
 def _trade_context(ev: Evaluator, axis: str, value: float) -> dict:
     """The envelope with its horizontal-speed limit (the low speed kept, or 0) or its slope magnitude set to
-    `value` (a signed slope range scaled to it, so an into-the-slope envelope stays one)."""
-    env = ev.lander([p.start for p in ev.free]).requirements.envelope
+    `value` (a signed slope range scaled to it, so an into-the-slope envelope stays one); an envelope the file
+    cannot have at `value` (a sloped envelope's limit not spanning it) is an InputError here, not a point of
+    invalid candidates."""
+    start = [p.start for p in ev.free]
+    env = ev.lander(start).requirements.envelope
     if axis == "slope":
         lo, hi = env.slope
         m = max(abs(lo), abs(hi))
         rng = (lo * value / m, hi * value / m) if m > 0 else (-value, value)
         return {TRADE_KEYS[axis]: [f"{rng[0]!r} rad", f"{rng[1]!r} rad"]}
-    return {TRADE_KEYS[axis]: [f"{min(env.horizontal_speed[0], value)!r} m/s", f"{value!r} m/s"]}
+    context = {TRADE_KEYS[axis]: [f"{min(env.horizontal_speed[0], value)!r} m/s", f"{value!r} m/s"]}
+    ev.lander(start, context)
+    return context

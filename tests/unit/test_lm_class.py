@@ -56,3 +56,24 @@ def test_lunar_gravity_and_the_lm_mass(lander):
     g = np.asarray(lander.scene.scene.gravity)
     assert np.linalg.norm(g) == pytest.approx(1.62, rel=RTOL)         # NASA Moon fact sheet, as gravity.py
     assert lander.scene.scene.mass == pytest.approx(7300.0, rel=RTOL)   # about 16,000 lb (7,257 kg)
+
+
+def test_the_lm_sloped_envelope_and_its_2_ft_terrain(lander):
+    # TN D-6850: 10 ft/s (3.048 m/s) down at rest to 7 ft/s (2.134 m/s) down at 4 ft/s (1.219 m/s) across, to the
+    # file's rounding (3.05, 2.13, 1.22 m/s: to 0.01 m/s, so within 0.005); the speed corners are that region's 4
+    # vertices (no landing at the box's 3.05 m/s down and 1.22 m/s across) and every Monte Carlo landing lies below
+    # the limit (1e-12 m/s of round-off); the 2 ft (0.6096 m) rock lands the two vertices on the limit.
+    def speed(r, i):
+        return abs(float(r.overrides[f"initial.velocity[{i}]"].split()[0]))
+
+    speeds = {(r.run_id.split("-")[1] if r.run_id.count("-") == 2 else "corner", speed(r, 1), speed(r, 2))
+              for r in lander.study.runs if r.run_id.startswith("corner-")}
+    assert {(h, v) for kind, h, v in speeds if kind == "corner"} == {(0.0, 0.3), (1.22, 0.3), (1.22, 2.13), (0.0, 3.05)}
+    assert {(h, v) for kind, h, v in speeds if kind == "rock"} == {(1.22, 2.13), (0.0, 3.05)}
+    assert (3.05, 2.13, 1.22) == pytest.approx((10 * 0.3048, 7 * 0.3048, 4 * 0.3048), abs=0.005)
+    for r in lander.study.runs:
+        if r.run_id.startswith("mc-"):
+            h, v = speed(r, 1), speed(r, 2)
+            assert 0 <= h <= 1.22 and 0.3 <= v <= 3.05 - (3.05 - 2.13) * h / 1.22 + 1e-12
+    rocks = {r.overrides["terrain.rocks"][-1]["radius"] for r in lander.study.runs if "rock" in r.run_id}
+    assert rocks == {"0.6096 m"}

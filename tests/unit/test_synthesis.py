@@ -144,15 +144,20 @@ def test_a_bad_synthesis_table_names_the_key_as_written(tmp_path, old, new, mess
 
 def test_small_synthesis_is_feasible_reproducible_and_resumes(tmp_path):
     """The winner meets every criterion on its sample and on the fresh check sample, is no heavier than the
-    start, and a second run (same seed) lands nothing new and chooses the same design bit for bit. A search
-    interrupted after its first generation resumes: the rerun lands only what was not stored and ends on
-    the same design."""
+    start on the search sample, and the chosen design is judged on its corners and the fresh sample (its
+    members sized there: every check at the required 1.25); a second run (same seed) lands nothing new and
+    chooses the same design bit for bit. A search interrupted after its first generation resumes: the rerun
+    lands only what was not stored and ends on the same design."""
+    from alightsize.synthesis.search import _best
     lander = _small(tmp_path)
     res = synthesize(lander, tmp_path / "a", backend="serial")
     assert res.best.feasible and res.ok
-    assert res.best.objective <= res.start.objective
+    assert _best(res.history).objective <= res.start.objective
     assert all(r.passed == r.n for r in res.rates + res.check_rates)
     assert len(res.check_rows) == 4
+    corners = sum(r["run_id"].startswith("corner-") for r in res.best_rows)
+    assert res.best.landings == corners + 4 and res.best_design is not None
+    assert all(r.outcome.factor >= 1.25 * (1 - 1e-6) for r in res.best_design.records)   # sizing's 1e-9 bisection
     again = synthesize(lander, tmp_path / "a", backend="serial")
     assert again.stats["landings_computed"] == 0
     assert again.best.x == res.best.x
