@@ -383,9 +383,9 @@ def commit(arrays, y, work, g):
 
 
 @njit(cache=True)
-def _leg_force_call(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
+def _leg_force_call(geo, cells, i, mem, shape, P, kin, out):
     """legs.leg_force as a call, for the rare paths (a touchdown, a lift-off): the step's paths inline it."""
-    return leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
+    return leg_force(geo, cells, i, mem, shape, P, kin, out)
 
 
 @_inner
@@ -401,8 +401,8 @@ def _switch(S, y, which, W):
     C = mem.shape[1]
     v = (y[3], y[4], y[5])
     if contact[which]:
-        _, alpha, beta, psi = _leg_force_call(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R,
-                                              v, y[10:13], dt[which], ft[which], rt[which], Xt[which])
+        _, alpha, beta, psi = _leg_force_call(geo, cells, which, mem[which], shape[which], P[which],
+                                              (y[0:3], R, v, y[10:13]), (dt[which], ft[which], rt[which], Xt[which]))
         contact[which] = 0
         if fresh or W.mt[which, 1] > 0.0:       # left on touching, or at the edge of its reach still pushed: LOCKED
             armed[which] = LOCKED
@@ -410,8 +410,8 @@ def _switch(S, y, which, W):
             gone = slack(geo, cells, which, mem[which], dt[which], Xt[which], P[which], R)
             armed[which] = BANDED if gone < 0.0 else 0
         pad_switch(mu, y, which, P, sliding, False, Xt, R, geo[9])
-        shape[which, 0], shape[which, 1], shape[which, 2] = lift_shape(geo, cells, which, mem[which], alpha, beta, psi,
-                                                                       dt[which, 0], y[0:3], R)
+        shape[which, 0], shape[which, 1], shape[which, 2] = lift_shape(geo, cells, which, mem[which],
+                                                                       (alpha, beta, psi), dt[which, 0], y[0:3], R)
         if geo[7][which] == TELESCOPING:
             _clear(S, y, which, R)
         last[which, 2 * C] = 0.0
@@ -432,8 +432,8 @@ def _switch(S, y, which, W):
         P[which, 0], P[which, 1], P[which, 2] = pad[0], pad[1], pad[2] if on_face else top
         contact[which] = 1
         sliding[which] = FACE if on_face else 1                 # (re)contact slides on mu_D (eq. 33)
-        _leg_force_call(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R, v, y[10:13], dt[which],
-                        ft[which], rt[which], Xt[which])
+        _leg_force_call(geo, cells, which, mem[which], shape[which], P[which], (y[0:3], R, v, y[10:13]),
+                        (dt[which], ft[which], rt[which], Xt[which]))
         pad_switch(mu, y, which, P, sliding, True, Xt, R, geo[9])
         for j in range(C):
             last[which, j], last[which, C + j] = dt[which, j], 0.0
