@@ -125,7 +125,7 @@ def leg_force(geo, cells, i, mem, shape, P, kin, out):
     rte[1] = lever2 * alpha_dot
     f2 = cell_force(cells, i, 1, mem, d2, rte[1])
     af2 = f2 + return_spring_force(g, d2)
-    x0, x1, x2 = ground_components(g, sa, ca, sb, cb, sp, cp, lever1 / g.AU * f1, lever2 * af2)   # eq. 59-61
+    x0, x1, x2 = ground_components(g, (sa, ca, sb, cb, sp, cp), lever1 / g.AU * f1, lever2 * af2)   # eq. 59-61
     k = min(alpha / SEAT, 1.0)
     x0, x1, x2 = k * x0, k * x1, k * x2 + (1.0 - k) * lever1 * f1 / (g.AU * cp)   # seated: FORCE's alpha <= 1e-5
     defl[0], defl[1], frc[0], frc[1] = d1, d2, f1, f2

@@ -291,8 +291,8 @@ def _rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy, te
             dy[d] = 0.0
             if contact[i] and cn[i, j] > 0:
                 m = cn[i, j]
-                static = crush_cell.force(cd[i, j, :m], cf[i, j, :m], ck[i, j], 0.0, cy[i, j], mem[i, j, 0],
-                                          mem[i, j, 1], dt[i, j], 0.0)
+                static = crush_cell.force(cd[i, j, :m], cf[i, j, :m], ck[i, j], 0.0, cy[i, j], (mem[i, j, 0],
+                                          mem[i, j, 1]), dt[i, j], 0.0)
                 dy[d] = (ft[i, j] - static) * rt[i, j]
                 other -= ft[i, j] * rt[i, j]
         dy[o] = dy[o + 1] = dy[o + 2] = dy[o + 3] = 0.0

@@ -353,7 +353,8 @@ def _commit(S, y, W, g):
             m = cn[i, j]
             d, f = cd[i, j, :m], cf[i, j, :m]
             delta = dt[i, j]
-            damper = ft[i, j] - crush_cell.force(d, f, ck[i, j], 0.0, cy[i, j], mem[i, j, 0], mem[i, j, 1], delta, 0.0)
+            damper = ft[i, j] - crush_cell.force(d, f, ck[i, j], 0.0, cy[i, j], (mem[i, j, 0], mem[i, j, 1]), delta,
+                                                 0.0)
             if known:
                 energy[i, j] += crush_cell.static_work(d, f, ck[i, j], cy[i, j], mem[i, j, 0], mem[i, j, 1],
                                                        last[i, j], delta)
@@ -512,7 +513,7 @@ def _monitor(S, y, t, dt_step):
             if contact[order[m]]:
                 pads[k, 0], pads[k, 1], pads[k, 2] = P[order[m], 0], P[order[m], 1], P[order[m], 2]
                 k += 1
-        margins = tipping_margins(y[0:3], y[3:6], R, y[10:13], mass, inertia, gravity, pads, True)
+        margins = tipping_margins(y[0:3], y[3:6], R, y[10:13], (mass, inertia), gravity, pads, True)
         if on_ground == n:
             if stable_by_energy(margins):                       # eq. 89-95 (QUIMOT) for every adjacent pair
                 return STABLE
@@ -545,9 +546,9 @@ def _hanging_clear(S, y, R):
             b = (b + 1) % n
         foot = free_footpad(geo, cells, i, mem[i], shape[i], y[0:3], R)
         ground = pad_ground(mu, y, i, n, geo[9], foot[0], foot[1])
-        if not (foot[2] > ground and hanging_margin(y[0:3], y[3:6], y[10:13], mass, inertia, gravity, P[order[a]],
-                                                    P[order[b]], foot, foot[2] - ground) > 0.0):   # NaN: not clear
-            return False
+        if not (foot[2] > ground and hanging_margin(y[0:3], y[3:6], y[10:13], (mass, inertia), gravity,
+                                                    (P[order[a]], P[order[b]]), foot, foot[2] - ground) > 0.0):
+            return False                                                                  # NaN: not clear
     return True
 
 

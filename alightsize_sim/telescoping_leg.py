@@ -61,7 +61,7 @@ def cell_force(cells, i, j, mem, delta, rate):
     """Force of cell j of leg i at deflection delta and rate, given its committed memory."""
     cd, cf, cn, ck, cc, cy = cells
     m = cn[i, j]
-    return crush_cell.force(cd[i, j, :m], cf[i, j, :m], ck[i, j], cc[i, j], cy[i, j], mem[j, 0], mem[j, 1],
+    return crush_cell.force(cd[i, j, :m], cf[i, j, :m], ck[i, j], cc[i, j], cy[i, j], (mem[j, 0], mem[j, 1]),
                             delta, rate)
 
 
