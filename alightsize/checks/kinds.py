@@ -11,7 +11,7 @@ from typing import Annotated, Any, Callable, Literal
 from pydantic import PlainValidator, RootModel, ValidationInfo, model_validator
 from pydantic_core import PydanticCustomError
 
-from alightsize.checks import plates
+from alightsize.checks import plates, sandwich
 
 from alightsize.checks import stress
 from alightsize.checks.rules import RULES, DEFAULT_RULES, Rules
@@ -276,13 +276,40 @@ class PlateEccentric(_PlateLoad):
     load_offset: Length
 
 
+class _Sandwich(_Check):
+    """A load W over a central circle of radius r0 on a circular sandwich plate, edge simply supported; the plate's
+    radius defaults to the section's."""
+
+    load: PositiveForce
+    load_radius: Length
+    radius: Length | None = None
+
+
+class SandwichFaceStress(_Sandwich):
+    kind: Literal["sandwich_face_stress"]
+    theory: Plate | None = None
+
+
+class SandwichFaceBuckling(_Sandwich):
+    kind: Literal["sandwich_face_buckling"]
+
+
+class SandwichCoreShear(_Sandwich):
+    kind: Literal["sandwich_core_shear"]
+
+
+class SandwichCoreCrushing(_Sandwich):
+    kind: Literal["sandwich_core_crushing"]
+
+
 class CheckTable(RootModel):
     """An `[[item.check]]` table: the table of its `kind`."""
 
     root: Tagged("kind", None, Compression, Tension, Bending, Combined,  # type: ignore[valid-type]
                  ColumnBuckling, LocalBuckling, Bearing, PinShear, PinDoubleShear, RingBending, ConeTension,
                  PlateFixedCenterLoad, PlateSupportedCenterLoad, PlateFixedMoment, PlateSupportedMoment,
-                 AnnularOuterSupported, AnnularOuterFixed, AnnularInnerSupported, AnnularInnerFixed, PlateEccentric)
+                 AnnularOuterSupported, AnnularOuterFixed, AnnularInnerSupported, AnnularInnerFixed, PlateEccentric,
+                 SandwichFaceStress, SandwichFaceBuckling, SandwichCoreShear, SandwichCoreCrushing)
 
 
 # ---------------------------------------------------------------- the checks' parameters (SI) from their tables
@@ -385,6 +412,14 @@ def _eccentric_params(t, rules: Rules, node: Node) -> dict:
                          "radius App. IV printed)", f"formula = {formula!r}")
     return {"W": t.load, "W_total": t.distributed_load, "p": t.load_offset, "r0": t.load_radius, "a": t.radius,
             "a_t": t.radius_tangential, "formula": formula, "t": t.thickness, **_theory(t, rules)}
+
+
+def _sandwich_params(t, rules: Rules, node: Node) -> dict:
+    """`theory` (face stress only): the plate criterion of the faces' equal biaxial stress at the centre."""
+    out = {"W": t.load, "r0": t.load_radius, "a": t.radius}
+    if t.kind == "sandwich_face_stress":
+        out["theory"] = t.theory or rules.plate
+    return out
 
 
 # ---------------------------------------------------------------- evaluators
@@ -848,6 +883,116 @@ def _plate_eccentric(p, s, mat) -> Outcome:
     return _shear_outcome([("at the load", sr, st)], p["W"], mat, steps, p["theory"])
 
 
+def _sandwich_geometry(p, s: Section) -> tuple[float, float, float, Material]:
+    """(a, tf, c, core) of a sandwich check: the plate radius (the check's or the section's), the face thickness,
+    the core depth and the core material."""
+    if s.core is None:
+        raise KeyError("core_material")
+    return p["a"] or s.dims["diameter"] / 2, s.dims["face"], s.dims["core_depth"], s.core
+
+
+def _sandwich_range(p, s: Section) -> tuple[str, str, str] | None:
+    """The load circle inside the plate, and a thin plate: the sandwich's depth c + 2 tf at most half its radius
+    (Young & Budynas 2002 §11.1, as the solid plates)."""
+    a, tf, c, _ = _sandwich_geometry(p, s)
+    if p["r0"] > a:
+        return "load_radius", f"a load radius at most the plate radius {_length(a)}", _length(p["r0"])
+    if c + 2 * tf > a / 2:
+        return ("section.core_depth", f"a thin plate, depth (core_depth + 2 face) at most {_length(a / 2)}, half the "
+                "plate's radius", _length(c + 2 * tf))
+    return None
+
+
+def _sandwich_face(p, s, mat) -> tuple[float, list[Step]]:
+    """The faces' stress at the centre (equal radial and tangential, tension on the lower face, compression on
+    the loaded one) with its steps."""
+    a, tf, c, _ = _sandwich_geometry(p, s)
+    m = mat.value("poisson_m")
+    moment = sandwich.centre_moment(p["W"], a, p["r0"], m)
+    sig = sandwich.face_stress(moment, tf, c)
+    return sig, [Step("Bending moment per unit width at the centre, edge supported (Roark 1954 p. 194-195; the "
+                      "sandwich's moments are the solid plate's)", "M",
+                      "{W} / (4π) [1 + (1 + 1/{m}) ln({a}/{r0}) - (1 - 1/{m}) {r0}²/(4 {a}²)]",
+                      (("W", p["W"], "force"), ("m", m, "dimensionless"), ("a", a, "length"),
+                       ("r0", p["r0"], "length")), moment, "force"),
+                 Step("Face stress at the centre, outer fibre (Allen 1969 ch. 2)", "σf",
+                      "6 {M} ({c} + 2 {tf}) / (({c} + 2 {tf})³ - {c}³)",
+                      (("M", moment, "force"), ("c", c, "length"), ("tf", tf, "length")), sig, "stress")]
+
+
+def _sandwich_outside(p, s) -> Outcome | None:
+    bad = _sandwich_range(p, s)
+    return _outside(bad, p["W"]) if bad else None
+
+
+def _sandwich_stress(p, s, mat) -> Outcome:
+    out = _sandwich_outside(p, s)
+    if out:
+        return out
+    sig, steps = _sandwich_face(p, s, mat)
+    return _shear_outcome([("faces at the centre", sig, sig)], p["W"], mat, steps, p["theory"])
+
+
+def _sandwich_buckling(p, s, mat) -> Outcome:
+    """The loaded face in equal biaxial compression at the centre: intracell buckling judged on the sum of the two
+    compressive stresses (the linear interaction, exact for a square cell's first mode, Timoshenko & Gere 1961
+    §9.5), wrinkling on either stress (one-way wrinkles); each elastic critical stress capped at the face's yield
+    (2 Fcy for the sum), where the face stress check governs. The lower factor of the two is the check's."""
+    out = _sandwich_outside(p, s)
+    if out:
+        return out
+    _, tf, _, core = _sandwich_geometry(p, s)
+    e, fy, nu = mat.value("elastic_modulus"), mat.value("yield_strength"), 1 / mat.value("poisson_m")
+    sig, steps = _sandwich_face(p, s, mat)
+    ic = sandwich.intracell_buckling(e, nu, tf, core.value("cell_size"))
+    wr = sandwich.wrinkling(e, core.value("elastic_modulus"), core.value("shear_modulus"))
+    ic_crit, wr_crit = min(ic, 2 * fy), stress.local_critical(wr, fy)
+    steps += [Step("Intracell buckling stress (Hexcel 2000 TSB 124 p. 5)", "σic", "2 {Ef} / (1 - {ν}²) ({tf} / {s})²",
+                   (("Ef", e, "stress"), ("ν", nu, "dimensionless"), ("tf", tf, "length"),
+                    ("s", core.value("cell_size"), "length")), ic, "stress"),
+              Step("Intracell allowable of σr + σt, capped at the equal-biaxial yield", "σic,allow",
+                   "min({σic}, 2 {Fcy})", (("σic", ic, "stress"), ("Fcy", fy, "stress")), ic_crit, "stress"),
+              Step("Intracell factor: σr + σt against it", "fic", "{σic,allow} / (2 {σf})",
+                   (("σic,allow", ic_crit, "stress"), ("σf", sig, "stress")), ic_crit / (2 * sig), "dimensionless"),
+              Step("Wrinkling stress (Hexcel 2000 TSB 124 p. 5)", "σwr", "0.5 ({Ef} {Ec} {Gc})^(1/3)",
+                   (("Ef", e, "stress"), ("Ec", core.value("elastic_modulus"), "stress"),
+                    ("Gc", core.value("shear_modulus"), "stress")), wr, "stress"),
+              Step("Wrinkling allowable, capped at the face's yield", "σwr,allow", "min({σwr}, {Fcy})",
+                   (("σwr", wr, "stress"), ("Fcy", fy, "stress")), wr_crit, "stress")]
+    if ic_crit / 2 <= wr_crit:
+        return Outcome("face_buckling", p["W"], 2 * sig, ic_crit, stress.design_factor(ic_crit, 2 * sig), tuple(steps))
+    return Outcome("face_buckling", p["W"], sig, wr_crit, stress.design_factor(wr_crit, sig), tuple(steps))
+
+
+def _sandwich_shear(p, s, mat) -> Outcome:
+    out = _sandwich_outside(p, s)
+    if out:
+        return out
+    _, tf, c, core = _sandwich_geometry(p, s)
+    tau = sandwich.core_shear(p["W"], p["r0"], tf, c)
+    allow = core.value("shear_strength")
+    steps = (Step("Core shear stress at the load circle (Allen 1969 ch. 2)", "τc", "{W} / (2π {r0} ({c} + {tf}))",
+                  (("W", p["W"], "force"), ("r0", p["r0"], "length"), ("c", c, "length"), ("tf", tf, "length")),
+                  tau, "stress"),
+             Step(f"Core shear strength ({core.name})", "τallow", "{τallow}", (("τallow", allow, "stress"),), allow,
+                  "stress"))
+    return Outcome("core_shear", p["W"], tau, allow, stress.design_factor(allow, tau), steps)
+
+
+def _sandwich_crushing(p, s, mat) -> Outcome:
+    out = _sandwich_outside(p, s)
+    if out:
+        return out
+    core = _sandwich_geometry(p, s)[3]
+    sig = sandwich.core_bearing(p["W"], p["r0"])
+    allow = core.value("compressive_strength")
+    steps = (Step("Core bearing stress under the load circle", "σc", "{W} / (π {r0}²)",
+                  (("W", p["W"], "force"), ("r0", p["r0"], "length")), sig, "stress"),
+             Step(f"Core compressive strength ({core.name})", "Fc", "{Fc}", (("Fc", allow, "stress"),), allow,
+                  "stress"))
+    return Outcome("core_crushing", p["W"], sig, allow, stress.design_factor(allow, sig), steps)
+
+
 # kind -> (parameters from its table, evaluator, material properties it needs)
 Reader = Callable[[Any, Rules, Node], dict]
 Evaluator = Callable[[dict, Section | None, Material], Outcome]      # section None: an item without one
@@ -878,7 +1023,16 @@ KINDS: dict[str, tuple[Reader, Evaluator, tuple[str, ...]]] = {
     "plate_annular_inner_fixed_uniform_pressure": (_annular_params("free", "fixed"), _plate_annular,
                                                    ("yield_strength", "poisson_m")),
     "plate_supported_eccentric_and_distributed": (_eccentric_params, _plate_eccentric, ("yield_strength", "poisson_m")),
+    "sandwich_face_stress": (_sandwich_params, _sandwich_stress, ("yield_strength", "poisson_m")),
+    "sandwich_face_buckling": (_sandwich_params, _sandwich_buckling,
+                               ("elastic_modulus", "yield_strength", "poisson_m")),
+    "sandwich_core_shear": (_sandwich_params, _sandwich_shear, ()),
+    "sandwich_core_crushing": (_sandwich_params, _sandwich_crushing, ()),
 }
+# sandwich kind -> the core material properties it uses
+SANDWICH_CORE = {"sandwich_face_stress": (),
+                 "sandwich_face_buckling": ("elastic_modulus", "shear_modulus", "cell_size"),
+                 "sandwich_core_shear": ("shear_strength",), "sandwich_core_crushing": ("compressive_strength",)}
 # retired kind -> what to write instead
 RETIRED = {"plate_annular_uniform_pressure": (
     ("plate_annular_inner_supported_uniform_pressure (what this name computed: inner edge supported, outer edge "
@@ -901,6 +1055,7 @@ STANDS_IN: dict[str, dict[str, str]] = {
     **{f"plate_annular_{edge}_uniform_pressure": {**_PLATE, "inner_radius": "inner_diameter"}
        for edge in ("outer_supported", "outer_fixed", "inner_supported", "inner_fixed")},
     "plate_supported_eccentric_and_distributed": {**_PLATE, "radius_tangential": "diameter"},
+    **{kind: {"radius": "diameter"} for kind in SANDWICH_CORE},
 }
 
 
@@ -930,9 +1085,9 @@ def out_of_range(check: Check, section: Section | None, material: Material) -> t
             expected = (f"a span of at least {2 * stress.RING_MIN_R_OVER_C:g} times the section's c {_length(c)} "
                         "(the straight-beam ring holds for R/c >= 2, R = span / 2)")
             return "span", expected, _length(p["span"])
-    elif check.kind.startswith("plate_"):
+    elif check.kind.startswith(("plate_", "sandwich_")):
         try:
-            return _plate_range(p, section)
+            return (_sandwich_range if check.kind.startswith("sandwich_") else _plate_range)(p, section)
         except (KeyError, AttributeError, TypeError):     # a dimension missing: the evaluation names it
             return None
     return None

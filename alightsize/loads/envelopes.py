@@ -61,7 +61,7 @@ class LegCase:
 @dataclass(frozen=True)
 class Extreme:
     value: float                           # N
-    at: tuple[float, float, float]         # alpha, beta, psi (rad)
+    at: tuple[float, ...]                  # alpha, beta, psi (rad); () where a landing's tripod load peaked
     configuration: str
 
 

@@ -27,6 +27,10 @@ class Material:
     poisson_m: float | None = None
     crush_strength: float | None = None        # crushable cores: the crushing stress
     stroke_fraction: float | None = None       # crushable cores: usable stroke / core length
+    compressive_strength: float | None = None  # sandwich cores: flatwise (stabilised) compressive strength
+    shear_strength: float | None = None        # sandwich cores: transverse shear strength (the weaker direction)
+    shear_modulus: float | None = None         # sandwich cores: transverse shear modulus (the weaker direction)
+    cell_size: float | None = None             # honeycomb cores: the cell's inscribed circle diameter
     source: dict = field(default_factory=dict)
 
     def value(self, prop: str) -> float:
@@ -48,6 +52,10 @@ class MaterialFile(Table):
     poisson_m: Annotated[float, Number()] | None = None
     crush_strength: Annotated[float, Quantity("stress")] | None = None
     stroke_fraction: Annotated[float, Number()] | None = None
+    compressive_strength: Annotated[float, Quantity("stress")] | None = None
+    shear_strength: Annotated[float, Quantity("stress")] | None = None
+    shear_modulus: Annotated[float, Quantity("stress")] | None = None
+    cell_size: Annotated[float, Quantity("length")] | None = None
     source: dict[str, str] = {}
 
     @model_validator(mode="after")

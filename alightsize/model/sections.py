@@ -12,6 +12,7 @@ from alightsize.model import section_properties as props
 from alightsize.common import units
 from alightsize.common.config import Node
 from alightsize.common.typed import Quantity, Table, Tagged, refuse, validate
+from alightsize.model.materials import Material
 
 # shape -> (dimensions it is given by, derived properties a config may override with printed values)
 SHAPES = {
@@ -19,17 +20,20 @@ SHAPES = {
     "rod": (("diameter",), ("area", "inertia", "c")),
     "rectangle": (("width", "height"), ("area", "inertia", "c")),
     "plate": (("diameter", "thickness", "inner_diameter"), ()),
+    "sandwich": (("diameter", "face", "core_depth"), ()),
     "given": ((), ("area", "inertia", "c")),
 }
 
 
 @dataclass(frozen=True)
 class Section:
-    """A shape with its dimensions (SI) and any printed properties that replace the derived ones."""
+    """A shape with its dimensions (SI) and any printed properties that replace the derived ones; a sandwich's
+    core material (`core`)."""
 
     shape: str
     dims: dict[str, float]
     overrides: dict[str, float] = field(default_factory=dict)
+    core: Material | None = None
 
     def with_dim(self, name: str, value: float) -> "Section":
         return replace(self, dims={**self.dims, name: value})
@@ -169,6 +173,17 @@ class PlateTable(Table):
     inner_diameter: Length | None = None
 
 
+class SandwichTable(Table):
+    """A circular sandwich plate: two faces of thickness `face` on a core of depth `core_depth`, the core a
+    material of the library."""
+
+    shape: Literal["sandwich"]
+    diameter: Length
+    face: Length
+    core_depth: Length
+    core_material: str
+
+
 class GivenTable(_Printed):
     shape: Literal["given"]
 
@@ -176,16 +191,24 @@ class GivenTable(_Printed):
 class SectionTable(RootModel):
     """An item's `section`: the table of its `shape` (dimensions and printed properties in SI)."""
 
-    root: Tagged("shape", None, TubeTable, RodTable, RectangleTable, PlateTable, GivenTable)  # type: ignore[valid-type]
+    root: Tagged("shape", None, TubeTable, RodTable, RectangleTable, PlateTable,  # type: ignore[valid-type]
+                 SandwichTable, GivenTable)
 
 
-def read_section(node: Node) -> Section:
+def read_section(node: Node, materials: dict[str, Material] | None = None) -> Section:
     """An item's `section` table (SectionTable), refused where its dimensions describe no real section; a printed
-    property far from the derived one warns."""
+    property far from the derived one warns. A sandwich's `core_material` is one of `materials`."""
     t = validate(SectionTable, node.data, node.file, node.path).root
     names, overridable = SHAPES[t.shape]
     dims = {n: getattr(t, n) for n in names if getattr(t, n) is not None}
-    section = Section(t.shape, dims, {n: getattr(t, n) for n in overridable if getattr(t, n) is not None})
+    core = None
+    if isinstance(t, SandwichTable):
+        materials = materials or {}
+        if t.core_material not in materials:
+            raise node.error("core_material", "one of the materials " + ", ".join(sorted(materials)),
+                             repr(t.core_material))
+        core = materials[t.core_material]
+    section = Section(t.shape, dims, {n: getattr(t, n) for n in overridable if getattr(t, n) is not None}, core)
     problem = geometry_error(section)
     if problem:
         raise node.error(problem[0], problem[1], ", ".join(f"{n} {node.raw(n)}" for n in dims))

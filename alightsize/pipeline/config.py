@@ -40,8 +40,9 @@ class DesignSpec:
     weight_goal: float | None = None          # leg-system weight as a fraction of the capsule
     rules: str = DEFAULT_RULES                # the checks' formulas where a check names none (checks.rules)
     # items whose loads the landings give (a tripod leg's members): stored landing rows -> the items that
-    # replace `items` (which hold them under stand-in loads, validated when read)
-    landing_items: Callable[[tuple[dict, ...]], tuple[Item, ...]] | None = None
+    # replace `items` (which hold them under stand-in loads, validated when read) and the loads' references
+    landing_items: Callable[[tuple[dict, ...]], tuple[tuple[Item, ...], tuple[LoadReference, ...]]] | None = None
+    footpad_mass: float | None = None         # kg: the landings' footpad mass the sized `footpad` item must match
 
 
 @dataclass(frozen=True)
@@ -61,6 +62,7 @@ class DesignConfig:
     load_refs: tuple[LoadReference, ...] = ()
     landings: Landings | None = None
     weight_goal: float | None = None
+    footpad_mass: float | None = None         # kg, as DesignSpec's
 
 
 def read_items(nodes: tuple[Node, ...], mats: dict[str, Material], required: float, root: Node,
@@ -140,14 +142,16 @@ def prepare(spec: DesignSpec, landings_dir: Path | None = None, progress: bool =
     loads = run_loads(spec.loads) if spec.loads is not None else None
     landings = None
     items = spec.items
+    derived: tuple[LoadReference, ...] = ()
     if spec.landings is not None:
         loads, landings = (landed(spec.landings, loads, rows) if rows is not None
                            else run_landings(spec.landings, loads, landings_dir, progress))
         if spec.landing_items is not None:
-            items = spec.landing_items(landings.rows)
+            items, derived = spec.landing_items(landings.rows)
     resolved = [with_loads(item, loads, str(spec.path)) for item in items]
     items = tuple(item for item, _ in resolved)
-    refs = tuple(r for _, item_refs in resolved for r in item_refs)
+    refs = derived + tuple(r for _, item_refs in resolved for r in item_refs)
     return DesignConfig(spec.path, spec.configuration, spec.title, spec.capsule_mass, spec.legs, spec.units,
-                        spec.required, spec.decimals, items, loads, refs, landings, spec.weight_goal)
+                        spec.required, spec.decimals, items, loads, refs, landings, spec.weight_goal,
+                        spec.footpad_mass)
 

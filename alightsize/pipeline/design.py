@@ -23,6 +23,13 @@ CHECK_COLUMNS = ["configuration", "item", "check", "kind", "load_N", "stress_Pa"
                  "required_design_factor", "margin_of_safety", "ok", "ok_as_stated"]     # CheckRecord.as_json
 
 
+# The sized footpad may weigh this much more than the footpad mass the landings simulated (a fraction of it): the
+# footpad's mass enters the landings only through its own inertia and momentum at contact, a few percent of a
+# footpad's mass changes the strut loads by far less than the design factor's margin, and without a band the
+# write-the-mass-and-rerun loop (the new mass moves the loads, the loads move the sized mass) would not settle.
+FOOTPAD_MASS_TOLERANCE = 0.05
+
+
 @dataclass(frozen=True)
 class WeightRow:
     label: str
@@ -63,8 +70,22 @@ class DesignResult:
         return goal is None or frac is None or frac <= goal
 
     @property
+    def footpad_sized(self) -> float | None:
+        """The sized footpad's weight, kg, when the landings simulated a footpad mass (a tripod lander's
+        `[members.footpad]` with `[legs] footpad_mass`)."""
+        if self.config.footpad_mass is None:
+            return None
+        return next((w.each for w in self.weights if w.item.name == "footpad"), None)
+
+    @property
+    def footpad_ok(self) -> bool:
+        """The sized footpad no heavier than the landings' footpad_mass by more than FOOTPAD_MASS_TOLERANCE."""
+        sized, simulated = self.footpad_sized, self.config.footpad_mass
+        return sized is None or simulated is None or sized <= simulated * (1 + FOOTPAD_MASS_TOLERANCE)
+
+    @property
     def ok(self) -> bool:
-        return self.checks_ok and self.landings_ok and self.weight_ok
+        return self.checks_ok and self.landings_ok and self.weight_ok and self.footpad_ok
 
     def governing_cases(self) -> list[str]:
         """Configurations whose envelope extremes the checks use, in the order of the loads file."""
@@ -109,6 +130,10 @@ class DesignResult:
             out.append(f"leg system: {fmt(self.per_leg * self.config.legs, 'mass', system)}, {100 * frac:.2f} % of "
                        "the capsule" + (f" (goal {100 * goal:.2f} %: {'met' if self.weight_ok else 'exceeded'})"
                                         if goal else ""))
+        sized, simulated = self.footpad_sized, self.config.footpad_mass
+        if sized is not None and simulated is not None:
+            out.append(f"footpad: sized {fmt(sized, 'mass', system)}, simulated {fmt(simulated, 'mass', system)} "
+                       f"([legs] footpad_mass: {'consistent' if self.footpad_ok else 'too light'})")
         bound = [s for s in self.sizings if s.at_bound]
         if bound:
             out.append("sized to an end of its range: " + ", ".join(
@@ -135,6 +160,12 @@ class DesignResult:
                 parts.append(f"{len(bad)} of {n} landings fail their criteria ({land.criteria_counts()})")
             else:
                 parts.append(f"all {n} landings meet their criteria")
+        if not self.footpad_ok:
+            sized, simulated = self.footpad_sized, self.config.footpad_mass
+            assert sized is not None and simulated is not None      # `footpad_ok` holds without either
+            parts.append(f"the sized footpad weighs {sized:.4g} kg, above the {simulated:.4g} kg the landings "
+                         f"simulated ([legs] footpad_mass, +{FOOTPAD_MASS_TOLERANCE:.0%} allowed): write "
+                         f'footpad_mass = "{sized:.4g} kg" and run again')
         if not self.weight_ok:
             frac, goal = self.weight_fraction, self.config.weight_goal
             assert frac is not None and goal is not None      # `weight_ok` holds without either
@@ -151,7 +182,8 @@ class DesignResult:
         MS and verdict; None where f is infinite), "weights" (per item), with landing cases "landings" (one row per
         landing as stored) and "interface_loads" (each body hardpoint's largest force), with sized items "sizing"
         (one row per sized item) and with envelope loads "load_references" (one row per check load taken from an
-        envelope). Copies: the result keeps its own."""
+        envelope; a tripod lander's: one per strut-load extreme over its landings, envelope "landings"). Copies:
+        the result keeps its own."""
         return {name: frame.copy() for name, frame in self.tables.items()}
 
     @cached_property
@@ -184,13 +216,15 @@ class DesignResult:
         row = {"load_key": r.key, "item": check[0].name if check else None, "kind": check[1].kind if check else None,
                "key": r.key[len(check[1].where) + 1:] if check else None, "envelope": r.envelope,
                "member": r.member, "sense": r.sense, "factor": r.factor, "value_N": r.value,
-               "at_rad": tuple(r.extreme.at) if r.extreme else None,
+               "at_rad": tuple(r.extreme.at) if r.extreme and r.extreme.at else None,
                "configuration": r.extreme.configuration if r.extreme else None, "quasi_static_N": None,
                "governs": None}
         if cfg.landings is not None and r.extreme is not None and r.envelope in cfg.landings.envelopes:
             qs = cfg.landings.quasi_static_load(r.envelope, r.member, r.sense)
             row["quasi_static_N"] = qs * r.factor if qs is not None else None
             row["governs"] = "landing" if r.extreme.configuration.startswith(LANDING) else "quasi-static"
+        elif cfg.landings is not None and r.extreme is not None and r.extreme.configuration.startswith(LANDING):
+            row["governs"] = "landing"                  # a load of the landings alone (a tripod's)
         return row
 
     def plot(self, kind: str = "factors"):

@@ -7,7 +7,7 @@ from math import inf
 from typing import Annotated
 
 from alightsize.common import units
-from alightsize.checks.kinds import Check, Outcome, out_of_range, read_check
+from alightsize.checks.kinds import SANDWICH_CORE, Check, Outcome, out_of_range, read_check
 from alightsize.checks.rules import Rules
 from pydantic import model_validator
 
@@ -155,7 +155,7 @@ def read_item(node: Node, materials: dict[str, Material], required_default: floa
     t = validate(ItemTable, node.data, node.file, node.path)
     if t.material not in materials:
         raise node.error("material", "one of the materials " + ", ".join(sorted(materials)), repr(t.material))
-    section = read_section(node.table("section")) if t.section is not None else None
+    section = read_section(node.table("section"), materials) if t.section is not None else None
     read: list[Check] = []
     for c in node.tables("check", optional=True, label="kind"):
         check = read_check(c, rules)
@@ -211,6 +211,10 @@ def _validate(item: Item, file: str) -> None:
         where = InputError(file, check.where, "", "")
         for prop in check.needs():
             require(item.material, prop, where)
+        core = item.section.core if item.section is not None else None
+        if core is not None:
+            for prop in SANDWICH_CORE.get(check.kind, ()):
+                require(core, prop, InputError(file, f"{item.where}.section.core_material", "", ""))
         try:
             bad = out_of_range(check, item.section, item.material)
             if bad:

@@ -44,7 +44,7 @@ from alightsize.landings.study import Run, Study, _sampled
 from alightsize.loads.config import Combined, Configuration, GridTable, LoadsConfig, Name, check_combined
 from alightsize.loads.envelopes import LegCase, default_grid
 from alightsize.loads.interface import landing_loads
-from alightsize.loads.quasi_static import TELESCOPING, validate_references
+from alightsize.loads.quasi_static import TELESCOPING, LoadReference, validate_references
 from alightsize.loads.telescoping import TelescopingLeg
 from alightsize.model.envelope import Envelope
 from alightsize.model.materials import library, material_paths
@@ -61,7 +61,8 @@ from alightsize.pipeline.items import Item, RequiredFactor
 from alightsize.pipeline.members import member_item
 from alightsize.pipeline.outrigger import (OUTRIGGER, Outrigger, articulated_outrigger, outrigger_item,
                                            outrigger_span, telescoping_outrigger)
-from alightsize.pipeline.tripod_members import TripodLoads, landing_tripod_items, tripod_items
+from alightsize.pipeline.tripod_members import (FOOTPAD, TripodLoads, landing_tripod_items, tripod_items,
+                                                tripod_references)
 
 SCENE_TABLES = ("capsule", "cells", "legs", "terrain", "initial", "controls", "output")
 ALL_CONFIGURATIONS = "all"           # the combined envelope of App. III cell variants when none is named
@@ -401,11 +402,12 @@ def _crushable(node: Node, root: Node, scene: SceneFile, mats: dict) -> Node:
 
 
 def _tripod_landing_items(leg: TripodLeg, members: Node, rules: str, mats: dict, required: float,
-                          others: tuple[Item, ...], rows: tuple[dict, ...]) -> tuple[Item, ...]:
+                          others: tuple[Item, ...], rows: tuple[dict, ...]
+                          ) -> tuple[tuple[Item, ...], tuple[LoadReference, ...]]:
     """A tripod lander's items under the strut-load extremes of its landing `rows`: its members
-    (`landing_tripod_items`), then its [[item]]s `others` as read."""
+    (`landing_tripod_items`), then its [[item]]s `others` as read; and those extremes with their landings."""
     nodes = landing_tripod_items(leg, members, rules, mats, rows)
-    return (*read_items(tuple(nodes), mats, required, members, rules), *others)
+    return (*read_items(tuple(nodes), mats, required, members, rules), *others), tripod_references(rows)
 
 
 def read_lander(path: str | Path, overrides: dict | None = None, root: Node | None = None) -> Lander:
@@ -470,8 +472,12 @@ def read_lander(path: str | Path, overrides: dict | None = None, root: Node | No
     landings = LandingSpec(study, envelopes, "criteria", member_loads)
     derived = (partial(_tripod_landing_items, *tripod, rules, mats, req.required, items[n_members:]) if tripod
                else None)
+    # the footpad mass the sized footpad must match; none with massless footpads, which a tripod has only where
+    # the landings hold its footpads (a footpad that never moves plays no part through its mass)
+    m = scene_file.legs.footpad_mass
+    pad = m if tripod and FOOTPAD in tripod[1].data and m > 0 else None
     spec = DesignSpec(path, name, title, scene.scene.mass, len(scene.scene.legs), units, req.required, req.decimals,
-                      mats, items, loads, landings, req.weight_goal, rules, derived)
+                      mats, items, loads, landings, req.weight_goal, rules, derived, pad)
     return Lander(spec, scene, req, document)
 
 

@@ -18,7 +18,9 @@ length or a count: the geometry gives them):
   rod section in double shear and in bearing on its lug (`pin`, as members.py's pins) under the strut's largest
   end force (for the cantilever's primary the resultant on its hardpoint pin or the ground force at its footpad).
 - `footpad`: a plate of the leg's footpad diameter (the section gives its thickness), supported at its edge under
-  the largest ground force over `load_radius` (as the telescoping `pad_plate`).
+  the largest ground force over `load_radius` (as the telescoping `pad_plate`); or, with a `shape = "sandwich"`
+  section (faces, core depth and core material), a sandwich plate under the same load: its faces' stress and
+  local buckling, its core's shear at the load circle and crushing under it (alightsize.checks.sandwich).
 - `primary_core`, `secondary_core`: crushable cores weighed from the leg's cells (`core_primary`,
   `core_secondary_1_compression`, ...), as `weight = { method = "crushable" }` items are.
 """
@@ -36,8 +38,11 @@ from alightsize.checks.rules import RULES, Rules
 from alightsize.common.config import Node
 from alightsize.common.errors import InputError
 from alightsize.common.typed import validate
+from alightsize.loads.envelopes import Extreme
+from alightsize.loads.quasi_static import LoadReference
 from alightsize.model.materials import Material
 from alightsize.pipeline.cores import core_prism
+from alightsize.pipeline.landings import LANDING
 from alightsize.pipeline.members import Member, _pin, _plate
 from alightsize_sim.tripod_leg import TripodLeg, strut_forces
 
@@ -46,7 +51,11 @@ CANTILEVER = ("primary_upper", "primary_lower", *INVERTED[1:])
 # what a tripod member table may say (the geometry gives every length and count)
 TRIPOD_ITEM_KEYS = ("material", "section", "weight", "size", "note", "required_design_factor", "allow_below_one")
 CORE_KEYS = ("material", "weight", "note")            # a core is weighed, not checked
+FOOTPAD = "footpad"                                   # the member (and item) the landings' footpad_mass must match
+TRIPOD_ENVELOPE = "landings"                          # the envelope of every landing, a tripod's member loads
 CORE_WEIGHT_KEYS = ("allowance", "extra", "label", "note")
+# a sandwich footpad's checks (alightsize.checks.sandwich)
+SANDWICH_CHECKS = ("sandwich_face_stress", "sandwich_face_buckling", "sandwich_core_shear", "sandwich_core_crushing")
 
 
 @dataclass(frozen=True)
@@ -114,6 +123,25 @@ class TripodLoads:
                    float(np.linalg.norm(forces, axis=1).max()))
 
 
+def tripod_references(rows) -> tuple[LoadReference, ...]:
+    """The loads of `TripodLoads.from_landings(rows)`, each with the landing that set it (the first in the rows on a
+    tie): one reference per stored member and sense ever loaded, envelope TRIPOD_ENVELOPE (every landing), sense
+    "tension", "compression" or "largest" (knee_moment in N m, primary_pin and footpad in N)."""
+    best: dict[tuple[str, str], tuple[float, str]] = {}
+    for r in rows:
+        for d in json.loads(r.get("member_loads_json") or "[]"):
+            if "largest" in d:
+                senses = [("largest", d["largest"])]
+            else:
+                c = d["compression_N"]
+                senses = [("tension", d["tension_N"]), ("compression", None if c is None else -c)]
+            for sense, v in senses:
+                if v is not None and v > best.get((d["member"], sense), (0.0, ""))[0]:
+                    best[(d["member"], sense)] = (v, r["run_id"])
+    return tuple(LoadReference(f"{m} {sense}", TRIPOD_ENVELOPE, m, sense, 1.0, v, Extreme(v, (), LANDING + run))
+                 for (m, sense), (v, run) in best.items())
+
+
 def overhang_effective_length(a: float, b: float) -> float:
     """Effective (pinned) length of a uniform column pinned at its top, held laterally at a = the hardpoint-knee
     distance below it and free at its foot b further down, under one axial compression throughout: pi / k with
@@ -166,6 +194,13 @@ def _tube(compression: float, tension: float, rules: Rules, column: float, momen
     if compression > 0 or bend:
         out.append({"kind": "local_buckling", "load": _n(compression), **bend, "formula": rules.local})
     return out
+
+
+def _sandwich(load: str, member: Member, node: Node, rules: Rules) -> list[dict]:
+    """A sandwich footpad's checks (SANDWICH_CHECKS) under `load` over the member's `load_radius`."""
+    r0 = _plate(SANDWICH_CHECKS[0], load, member, node, rules)[0]["load_radius"]     # required as for a plate
+    return [{"kind": kind, "load": load, "load_radius": r0, **({"theory": rules.plate} if kind == SANDWICH_CHECKS[0]
+                                                               else {})} for kind in SANDWICH_CHECKS]
 
 
 def _cores(node: Node, name: str, leg: TripodLeg, materials: dict[str, Material]) -> list[dict]:
@@ -232,6 +267,9 @@ def tripod_member_items(node: Node, name: str, leg: TripodLeg, loads: TripodLoad
             raise section.error("diameter", "no diameter: the footpad's is the leg's footpad diameter",
                                 repr(section.raw("diameter")))
         base["section"] = {**section.data, "diameter": _m(leg.footpad_diameter)}
+        if section.raw("shape", None) == "sandwich":
+            return [{"name": "footpad", **base, "weight": base.get("weight", {"method": "sandwich"}),
+                     "check": _sandwich(_n(loads.footpad), member, node, rules)}]
         return [{"name": "footpad", **base, "weight": base.get("weight", {"method": "disc"}),
                  "check": _plate("plate_supported_center_load", _n(loads.footpad), member, node, rules)}]
     return [{"name": n, **base, "length": _m(length), "weight": base.get("weight", w), "check": checks}

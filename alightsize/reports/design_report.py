@@ -16,7 +16,7 @@ from alightsize.common.version import __version__
 from alightsize.common.figures import save_png
 from alightsize.common.trace import Step
 from alightsize.common.units import fmt, to_display, unit_label
-from alightsize.pipeline.design import CLOSEST_HEAD, DesignResult
+from alightsize.pipeline.design import CLOSEST_HEAD, FOOTPAD_MASS_TOLERANCE, DesignResult
 from alightsize.loads.quasi_static import TELESCOPING
 from alightsize.pipeline.landings import LANDING
 from alightsize.reports.loads_report import context as loads_context
@@ -200,8 +200,8 @@ def _interface(res: DesignResult, system: str) -> list[dict]:
 
 def _loads_context(res: DesignResult, system: str) -> dict | None:
     cfg = res.config
-    if cfg.loads is None:
-        return None
+    if cfg.loads is None:          # a tripod lander's loads are the landings': only their references to show
+        return {"telescoping": [], "tables": [], "heatmaps": []} if "load_references" in res.tables else None
     landed = cfg.landings is not None and cfg.loads.telescoping is not None and TELESCOPING in cfg.landings.envelopes
     return loads_context(cfg.loads, system, res.governing_cases(),
                          cfg.landings.quasi_static.telescoping if landed else None)
@@ -362,6 +362,9 @@ def summary_json(res: DesignResult) -> dict:
         out["interface_loads"] = json_records(tables["interface_loads"])
     if "sizing" in tables:
         out["sizing"] = json_records(tables["sizing"])
+    if res.footpad_sized is not None:
+        out["footpad_mass"] = {"sized_kg": res.footpad_sized, "simulated_kg": cfg.footpad_mass,
+                               "tolerance": FOOTPAD_MASS_TOLERANCE, "ok": res.footpad_ok}
     return out
 
 

@@ -162,10 +162,12 @@ class Evaluator:
         checks = sum(not r.ok for r in res.records)
         unsized = tuple(s.item for s in res.sizings if not s.feasible)
         frac = res.weight_fraction
-        feasible = stage == "full" and failing == 0 and checks == 0 and not unsized
+        # a sized footpad heavier than the landings simulated fails the design (DesignResult.footpad_ok)
+        pad = 0 if res.footpad_ok else 1
+        feasible = stage == "full" and failing == 0 and checks == 0 and not unsized and not pad
         graded = sum(kinds.values()) / max(len(lander.study.criteria.kinds()), 1)    # how many criteria fail
         violation = ((failing + graded) / max(n, 1) + checks / max(len(res.records), 1)
-                     + len(unsized) / max(len(res.sizings), 1))
+                     + len(unsized) / max(len(res.sizings), 1) + pad)
         objective = frac if feasible else 1.0 + frac + violation
         ev = Evaluation(key, tuple(map(float, x)), stage, objective, feasible, res.per_leg * res.config.legs, frac,
                         n, failing, dict(+kinds), checks, unsized, _peak_g(rows))

@@ -25,6 +25,12 @@ def disc_weight(rho: float, d: float, t: float, holes: int = 0, hole_d: float = 
     return rho * pi / 4 * (d * d - holes * hole_d * hole_d - inner_d * inner_d) * t
 
 
+def sandwich_weight(rho_face: float, rho_core: float, d: float, tf: float, c: float) -> float:
+    """W = pi/4 d² (2 rho_f tf + rho_c c): a circular sandwich plate's two faces and core (volumes, as App. V
+    weighs plates; the bond lines and closeouts are not included: `allowance` or `extra`)."""
+    return pi / 4 * d * d * (2 * rho_face * tf + rho_core * c)
+
+
 def prism_weight(rho: float, area: float, length: float) -> float:
     """W = rho A l (App. V, rods, honeycomb, swivel)."""
     return rho * area * length
@@ -88,6 +94,15 @@ class WeightSpec:
             steps = [Step("Weight", "W", f"{{ρ}} π/4 {_disc_area(p['holes'], dh, di)} {{t}}",
                           (("ρ", rho, "density"), ("d", d, "length"), ("dh", dh, "length"), ("di", di, "length"),
                            ("t", t, "length")), w, "mass")]
+        elif self.method == "sandwich":
+            sec = given(section)
+            if sec.core is None:
+                raise KeyError("core_material")
+            d, tf, c, rho_c = sec.dims["diameter"], sec.dims["face"], sec.dims["core_depth"], sec.core.density
+            w = sandwich_weight(rho, rho_c, d, tf, c)
+            steps = [Step("Weight: two faces and the core", "W", "π/4 {d}² (2 {ρf} {tf} + {ρc} {c})",
+                          (("d", d, "length"), ("ρf", rho, "density"), ("tf", tf, "length"), ("ρc", rho_c, "density"),
+                           ("c", c, "length")), w, "mass")]
         else:  # prism
             a = p["area"] if p["area"] is not None else given(section).area()
             span = _given(span, "length")
@@ -142,6 +157,18 @@ class DiscWeight(_Formula):
     hole_diameter: Length | None = None
 
 
+class SandwichWeight(_Formula):
+    """A sandwich section's faces (the item's material, or `density`/`material`) and core (its core material)."""
+
+    method: Literal["sandwich"]
+
+    @model_validator(mode="after")
+    def _no_length(self):
+        if self.length is not None:
+            raise refuse("no length (the section's diameter, faces and core give the volume)", "a length", "length")
+        return self
+
+
 class PrismWeight(_Formula):
     method: Literal["prism"]
     area: Area | None = None
@@ -188,14 +215,14 @@ class FixedWeight(_Weight):
     weight: Mass
 
 
-METHODS = ("tube", "disc", "prism", "scaled", "fixed")
+METHODS = ("tube", "disc", "prism", "sandwich", "scaled", "fixed")
 
 
 class WeightTable(RootModel):
     """An item's `weight`: the table of its `method`."""
 
-    root: Tagged("method", None, TubeWeight, DiscWeight, PrismWeight, ScaledWeight,  # type: ignore[valid-type]
-                 FixedWeight)
+    root: Tagged("method", None, TubeWeight, DiscWeight, PrismWeight,  # type: ignore[valid-type]
+                 SandwichWeight, ScaledWeight, FixedWeight)
 
 
 def _area(t: PrismWeight) -> float | None:
@@ -227,6 +254,6 @@ def read_weight(node: Node, materials: dict[str, Material]) -> WeightSpec:
         elif isinstance(t, DiscWeight):
             p.update(diameter=t.diameter, thickness=t.thickness, inner_diameter=t.inner_diameter, holes=t.holes,
                      hole_diameter=t.hole_diameter)
-        else:
+        elif isinstance(t, PrismWeight):
             p["area"] = _area(t)
     return WeightSpec(t.method, p, node.path, t.label)

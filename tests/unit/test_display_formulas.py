@@ -5,8 +5,9 @@ arithmetic in another order, a few ulps, never a wrong coefficient or term).
 
 The display notation (alightsize.common.trace.Step) read here: {name} an input; juxtaposition multiplies, left to
 right like * and /; a number written against a symbol (2π, 3m) is one factor, so "{F} / 2π" is F / (2π); ² ³ ⁴
-powers; √(x), √2; |x|; [ ] as ( ); ln, exp, min, max; π; "expr, F = expr" defines F for expr (a clause may name the
-line's own symbol: "σt = σr / {m}"). Evaluated by a restricted walk of Python's ast: no other names or calls."""
+powers, x^(y) a power of any exponent; √(x), √2; |x|; [ ] as ( ); ln, exp, min, max; π; "expr, F = expr" defines F
+for expr (a clause may name the line's own symbol: "σt = σr / {m}"). Evaluated by a restricted walk of Python's ast:
+no other names or calls."""
 
 from __future__ import annotations
 
@@ -29,7 +30,7 @@ REL = 1e-12          # same formula, operations reordered: within a few ulps of 
 # ---------------------------------------------------------------- the display-formula evaluator
 
 _TOKEN = re.compile(r"\s*(?:(?P<brace>\{[^{}]+\})|(?P<num>\d+\.?\d*|\.\d+)|(?P<sup>[²³⁴])"
-                    r"|(?P<name>[A-Za-zα-ωΑ-Ω_][A-Za-z0-9α-ωΑ-Ω_]*)|(?P<op>[-+*/(),=|√\[\]]))")
+                    r"|(?P<name>[A-Za-zα-ωΑ-Ω_][A-Za-z0-9α-ωΑ-Ω_]*)|(?P<op>[-+*/(),=|√^\[\]]))")
 _SUP = {"²": "2", "³": "3", "⁴": "4"}
 _BINARY = {ast.Add: lambda a, b: a + b, ast.Sub: lambda a, b: a - b, ast.Mult: lambda a, b: a * b,
            ast.Div: lambda a, b: a / b, ast.Pow: lambda a, b: a ** b}
@@ -104,6 +105,9 @@ def _python(text: str, names: dict[str, str]) -> str:
         elif tok in ")]":
             out.append(")")
             prev = "value"
+        elif tok == "^":
+            out.append("**")
+            prev = "op"
         else:
             out.append(tok)
             prev = "op"
@@ -165,6 +169,8 @@ def test_evaluator_reads_the_notation():
     # Hand-worked: 2π binds as one factor; juxtaposition is left-to-right multiplication; bars and clauses.
     s = Step("", "x", "({a} / 2π)² {b} + |{c}| {a}, F = 1", (("a", 3.0, ""), ("b", 2.0, ""), ("c", -4.0, "")), 0, "")
     assert evaluate(s) == pytest.approx((3 / (2 * math.pi)) ** 2 * 2 + 4 * 3, rel=1e-15)
+    s = Step("", "x", "0.5 ({a} {b})^(1/3) {c}", (("a", 3.0, ""), ("b", 2.0, ""), ("c", -4.0, "")), 0, "")
+    assert evaluate(s) == pytest.approx(0.5 * 6 ** (1 / 3) * -4, rel=1e-15)
     s = Step("", "x", "{ρ} π/4 ({d}² - 6 {h}²) {t}, k = x", (("ρ", 2.0, ""), ("d", 3.0, ""), ("h", 0.5, ""),
                                                              ("t", 0.1, "")), 5.0, "")
     assert evaluate(s) == pytest.approx(2 * math.pi / 4 * (9 - 1.5) * 0.1, rel=1e-15)
@@ -201,6 +207,16 @@ def _plate(rng, inner: bool = False) -> Section:
     if inner:
         dims["inner_diameter"] = d * _u(rng, 0.15, 0.7)
     return Section("plate", dims)
+
+
+_CORE = Material("core", "test honeycomb", density=50.0, elastic_modulus=5e8, compressive_strength=2e6,
+                 shear_strength=9e5, shear_modulus=1.5e8, cell_size=3.2e-3)
+
+
+def _sandwich(rng) -> Section:
+    d = _u(rng, 0.3, 1.0)
+    return Section("sandwich", {"diameter": d, "face": _u(rng, 2e-4, 2e-3), "core_depth": d * _u(rng, 0.02, 0.15)},
+                   core=_CORE)
 
 
 def _force(rng, signed: bool = True) -> str:
@@ -293,6 +309,15 @@ def _cases(kind: str, rng: random.Random) -> list[tuple[dict, Section]]:
                              "load_offset": f"{p!r} m", "load_radius": f"{r0!r} m", "formula": f, "theory": theory,
                              "equivalent_radius": rng.random() < 0.5, **at}, s))
         return out
+    if kind.startswith("sandwich_"):             # every theory (face stress); inside and outside the range
+        out = []
+        for theory in theories:
+            s = _sandwich(rng)
+            raw = {"load": _force(rng, False), "load_radius": f"{s.dims['diameter'] * _u(rng, 0.05, 0.4)!r} m"}
+            out.append(({**raw, **({"theory": theory} if kind == "sandwich_face_stress" else {})}, s))
+        s = _sandwich(rng)
+        out.append(({"load": _force(rng, False), "load_radius": f"{s.dims['diameter']!r} m"}, s))
+        return out
     raise KeyError(kind)
 
 
@@ -352,6 +377,8 @@ def _weights(method: str, rng: random.Random) -> list[tuple[dict, Section | None
         return [({"material": "al", "holes": holes, **({"hole_diameter": "0.004 m"} if holes else {}),
                   **({"inner_diameter": f"{_u(rng, 0.005, 0.02)!r} m"} if inner else {}), **e},
                  _plate(rng)) for holes in (0, 6) for inner in (False, True) for e in extras]
+    if method == "sandwich":
+        return [(e, _sandwich(rng)) for e in extras] + [({"material": "steel"}, _sandwich(rng))]
     if method == "prism":
         return [({**length, "material": "steel", **a, **e}, None) for e in extras
                 for a in ({"area": "2e-4 m^2"}, {"diameter": "0.01 m"}, {"width": "0.02 m", "height": "0.01 m"})] + [

@@ -3,6 +3,8 @@ the members derived from the geometry take the strut-load extremes of the stored
 forces balance the footpad force along a real landing, weight follows the geometry, and a cantilever designs."""
 
 import json
+from dataclasses import replace
+from math import pi
 
 import numpy as np
 import pytest
@@ -10,8 +12,9 @@ from conftest import ROOT
 
 from alightsize.loads.histories import TRIPOD_FORCES, tripod_member_histories
 from alightsize.model.scene_config import read_scene
-from alightsize.pipeline.design import run_design
+from alightsize.pipeline.design import FOOTPAD_MASS_TOLERANCE, DesignResult, run_design
 from alightsize.pipeline.lander import read_lander
+from alightsize.pipeline.tripod_members import SANDWICH_CHECKS
 from alightsize_sim.landing import simulate
 
 EXAMPLE = ROOT / "examples" / "lunar_tripod.toml"
@@ -66,7 +69,7 @@ def test_member_loads_are_the_strut_extremes_of_the_stored_landings(inverted):
     assert s["primary compression"] > 0 and s["footpad"] > 0
     expected = {("primary_strut", "compression"): s["primary compression"],
                 ("primary_strut", "column_buckling"): s["primary compression"],
-                ("footpad", "plate_supported_center_load"): s["footpad"]}
+                **{("footpad", kind): s["footpad"] for kind in SANDWICH_CHECKS}}
     for i in (1, 2):
         c, t = s[f"secondary{i} compression"], s[f"secondary{i} tension"]
         expected |= {(f"secondary_strut_{i}", "compression"): c, (f"secondary_strut_{i}", "column_buckling"): c,
@@ -149,3 +152,65 @@ def test_every_cell_a_leg_can_have_names_its_bottomed_class():
         kinds = [v for k, v in BOTTOMED_KIND.items() if cell.startswith(k)]
         assert len(kinds) == 1, cell
         assert f"bottomed_{kinds[0]}" in SYMBOL and f"bottomed_{kinds[0]}" in MEANING
+
+
+def test_the_sized_footpad_is_the_simulated_footpad_mass_or_the_design_fails(inverted):
+    # The sized sandwich footpad weighs pi/4 d² (2 rho_f t_f + rho_c c) (1 + allowance) (closed form, 1e-12), and
+    # the design holds only while that is at most [legs] footpad_mass x (1 + 5 %): at the limit it passes, 1e-9
+    # below it fails, the verdict naming the mass to write.
+    res = inverted
+    pad = next(i for i in res.items if i.name == "footpad")
+    dims, core = pad.section.dims, pad.section.core
+    expected = pi / 4 * dims["diameter"] ** 2 * (2 * pad.material.density * dims["face"]
+                                                 + core.density * dims["core_depth"]) * 1.25
+    assert res.footpad_sized == pytest.approx(expected, rel=1e-12)
+    assert res.config.footpad_mass == pytest.approx(2.1, rel=1e-12)          # examples/lunar_tripod.toml
+    limit = res.footpad_sized / (1 + FOOTPAD_MASS_TOLERANCE)
+
+    def with_mass(mass):
+        return DesignResult(replace(res.config, footpad_mass=mass), res.items, res.records, res.sizings, res.weights)
+
+    assert with_mass(limit).footpad_ok
+    light = with_mass(limit * (1 - 1e-9))
+    assert not light.footpad_ok and not light.ok
+    assert f'write footpad_mass = "{res.footpad_sized:.4g} kg"' in light.verdict()
+    assert light.verdict().startswith("FAIL")
+
+
+def test_a_lander_without_a_footpad_member_has_no_footpad_mass_to_match(tmp_path):
+    # Without [members.footpad] nothing sized stands for the simulated footpad: no comparison, no verdict part.
+    text = EXAMPLE.read_text()
+    start = text.index("\n[members.footpad]")
+    text = text[:start] + "\n" + text[text.index("[members.primary_core]"):]
+    path = tmp_path / "no_pad.toml"
+    path.write_text(text)
+    spec = read_lander(path, SMALL).spec
+    assert spec.footpad_mass is None
+
+
+
+def test_massless_held_footpads_have_no_footpad_mass_to_match():
+    # Footpads that cannot slip (friction 1,000) may be massless: nothing moves them, so no mass to match.
+    spec = read_lander(EXAMPLE, {**SMALL, "requirements.envelope.friction": [1000, 1000], "legs.footpad_mass": "0 kg"}
+                       ).spec
+    assert spec.footpad_mass is None
+
+
+def test_each_tripod_load_names_the_landing_that_set_it(inverted):
+    # With no landing named anywhere, every tripod load is the largest over every landing (the envelope of all
+    # of them, recomputed here from the rows); the load_references table gives each with the landing it came from,
+    # whose own stored extreme is that value (exactly: the same float), and the check loads are those values.
+    res = inverted
+    rows = res.config.landings.rows
+    s = _stored(rows)
+    refs = res.to_pandas()["load_references"]
+    tripod = refs[refs["envelope"] == "landings"]
+    assert len(tripod) > 0 and set(tripod["governs"]) == {"landing"}
+    for r in tripod.to_dict("records"):
+        key = r["member"] if r["sense"] == "largest" else f"{r['member']} {r['sense']}"
+        assert r["value_N"] == s[key]
+        run = r["configuration"].removeprefix("landing ")
+        own = _stored([x for x in rows if x["run_id"] == run])
+        assert own[key] == r["value_N"]
+    footpad = tripod[(tripod["member"] == "footpad")]["value_N"].item()
+    assert _check(res, "footpad", "sandwich_core_shear")["W"] == pytest.approx(footpad, rel=PARSE)

@@ -174,7 +174,7 @@ def test_the_compiled_variant_names_only_the_kinds_a_scene_uses():
 
 
 def test_a_sliding_landing_on_footpads_with_mass_closes_its_energy_audit():
-    """The example lander down a 12 deg slope at mu 0.4, 1 m/s across: its 5 kg footpads slide (friction's work
+    """The example lander down a 12 deg slope at mu 0.4, 1 m/s across: its 2.1 kg footpads slide (friction's work
     is part of the audit), and the audit closes below 1e-6 at rtol 1e-8."""
     cfg = read_scene(ROOT / "examples" / "lunar_tripod.toml",
                      {"terrain.slope": "12 deg", "terrain.mu_static": 0.4, "terrain.mu_dynamic": 0.4,
