@@ -78,12 +78,14 @@ def geometry(art, i) -> ArticulatedGeometry:
 
 
 @njit(cache=True)
-def leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
-    """Forces of leg i with its footpad held at P (terrain axes) under a capsule at r, attitude R (principal ->
-    terrain), velocity v (terrain), rate w (principal), the shape of the last accepted step choosing the root.
-    Writes the cell deflections, forces and deflection rates and the force X on the capsule (principal axes);
-    returns (power, alpha, beta, psi). Out of reach (no root), the upper deflection is written as -1 m (short of
-    any set: the leg lifts off) and the forces and rates are zero."""
+def leg_force(geo, cells, i, mem, shape, P, kin, out):
+    """Forces of leg i with its footpad held at P (terrain axes) under a capsule moving as kin = (r, R, v, w): at r,
+    attitude R (principal -> terrain), velocity v (terrain), rate w (principal), the shape of the last accepted step
+    choosing the root. Writes into out = (defl, frc, rte, X) the cell deflections, forces and deflection rates and
+    the force X on the capsule (principal axes); returns (power, alpha, beta, psi). Out of reach (no root), the
+    upper deflection is written as -1 m (short of any set: the leg lifts off) and the forces and rates are zero."""
+    r, R, v, w = kin
+    defl, frc, rte, X = out
     attach, L, art = geo[0], geo[1][i], geo[8]
     g = geometry(art, i)
     b0, b1, b2 = mtv(R, P[0] - r[0], P[1] - r[1], P[2] - r[2])     # CG -> footpad, principal axes
@@ -123,7 +125,7 @@ def leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
     rte[1] = lever2 * alpha_dot
     f2 = cell_force(cells, i, 1, mem, d2, rte[1])
     af2 = f2 + return_spring_force(g, d2)
-    x0, x1, x2 = ground_components(g, sa, ca, sb, cb, sp, cp, lever1 / g.AU * f1, lever2 * af2)   # eq. 59-61
+    x0, x1, x2 = ground_components(g, (sa, ca, sb, cb, sp, cp), lever1 / g.AU * f1, lever2 * af2)   # eq. 59-61
     k = min(alpha / SEAT, 1.0)
     x0, x1, x2 = k * x0, k * x1, k * x2 + (1.0 - k) * lever1 * f1 / (g.AU * cp)   # seated: FORCE's alpha <= 1e-5
     defl[0], defl[1], frc[0], frc[1] = d1, d2, f1, f2
@@ -148,10 +150,11 @@ def free_footpad(geo, cells, i, mem, shape, r, R):
 
 
 @njit(cache=True)
-def lift_shape(geo, cells, i, mem, alpha, beta, psi, main, r, R):
+def lift_shape(geo, cells, i, mem, loaded, main, r, R):
     """Stored geometry at lift-off (FORCE 3.10): the peg leg springs back to alpha = 0 at the lift-off psi if
-    its tip clears the terrain there, else the loaded shape is kept (main, the upper cell's deflection,
-    unused: the telescoping leg's interface)."""
+    its tip clears the terrain there, else the loaded shape (alpha, beta, psi) is kept (main, the upper cell's
+    deflection, unused: the telescoping leg's interface)."""
+    alpha, beta, psi = loaded
     tip = free_footpad(geo, cells, i, mem, (0.0, beta, psi), r, R)
     if clearance(geo[9], tip[0], tip[1], tip[2]) >= 0.0:
         return 0.0, beta, psi

@@ -99,14 +99,16 @@ def ground_force(g: ArticulatedGeometry, alpha, beta, psi, af1, af2):
 
 
 def _ground(g: ArticulatedGeometry, t: _Terms):
-    return ground_components(g, t.sa, t.ca, t.sb, t.cb, t.sp, t.cp, (t.se * t.cp - t.ce * t.sp) * t.af1, t.fp4)
+    return ground_components(g, (t.sa, t.ca, t.sb, t.cb, t.sp, t.cp), (t.se * t.cp - t.ce * t.sp) * t.af1, t.fp4)
 
 
 @njit(cache=True)
-def ground_components(g: ArticulatedGeometry, sa, ca, sb, cb, sp, cp, c25, fp4):
-    """(F1, F2, F3) from the upper cell's force normal to the links, C25 = sin(eta - psi) AF1, and the lower
-    cell's moment about the ring edge FP4 (eq. 59-61 as FORCE codes them; scalars or arrays). They are the
-    virtual-work equilibrium F . d(tip)/dq = generalized cell force for q = psi, alpha, beta."""
+def ground_components(g: ArticulatedGeometry, trig, c25, fp4):
+    """(F1, F2, F3) at the sines and cosines trig = (sin alpha, cos alpha, sin beta, cos beta, sin psi, cos psi),
+    from the upper cell's force normal to the links, C25 = sin(eta - psi) AF1, and the lower cell's moment about
+    the ring edge FP4 (eq. 59-61 as FORCE codes them; scalars or arrays). They are the virtual-work equilibrium
+    F . d(tip)/dq = generalized cell force for q = psi, alpha, beta."""
+    sa, ca, sb, cb, sp, cp = trig
     c18 = g.AS * sa + g.AL * ca
     c20 = g.AL * sa - g.AS * ca
     c17 = 1.0 / (sp * cb * c20 + cp * c18)

@@ -64,8 +64,9 @@ def loading_force(d: np.ndarray, f: np.ndarray, yield_force: float, delta: float
 
 
 @njit(cache=True)
-def force(d, f, k, c, yield_force, dmax, fmax, delta, rate) -> float:
-    """Cell force at deflection delta and rate (1/s of deflection), given the committed (dmax, fmax)."""
+def force(d, f, k, c, yield_force, memory, delta, rate) -> float:
+    """Cell force at deflection delta and rate (1/s of deflection), given the committed memory = (dmax, fmax)."""
+    dmax, fmax = memory
     if delta >= dmax:
         return loading_force(d, f, yield_force, delta)
     spring = fmax - k * (dmax - delta)

@@ -160,8 +160,8 @@ def pad_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, f
         P[2] = P0[2] + relief(geo[9], P[0], P[1])[0] - relief(geo[9], P0[0], P0[1])[0]
         rise = -(nrm[0] * u0 + nrm[1] * u1) / nrm[2]
         u2 = rise
-    power, alpha, beta, psi = leg_force(geo, cells, i, mem, shape, P, r, R, (v[0] - u0, v[1] - u1, v[2] - u2), w,
-                                        defl, frc, rte, X)
+    power, alpha, beta, psi = leg_force(geo, cells, i, mem, shape, P, (r, R, (v[0] - u0, v[1] - u1, v[2] - u2), w),
+                                        (defl, frc, rte, X))
     if sliding == FACE:
         return sliding, power, alpha, beta, psi, 1.0, 0.0, 0.0, 1.0
     fe = mv(R, X[0], X[1], X[2])
@@ -291,8 +291,8 @@ def _rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy, te
             dy[d] = 0.0
             if contact[i] and cn[i, j] > 0:
                 m = cn[i, j]
-                static = crush_cell.force(cd[i, j, :m], cf[i, j, :m], ck[i, j], 0.0, cy[i, j], mem[i, j, 0],
-                                          mem[i, j, 1], dt[i, j], 0.0)
+                static = crush_cell.force(cd[i, j, :m], cf[i, j, :m], ck[i, j], 0.0, cy[i, j], (mem[i, j, 0],
+                                          mem[i, j, 1]), dt[i, j], 0.0)
                 dy[d] = (ft[i, j] - static) * rt[i, j]
                 other -= ft[i, j] * rt[i, j]
         dy[o] = dy[o + 1] = dy[o + 2] = dy[o + 3] = 0.0

@@ -106,7 +106,7 @@ def _contact_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, de
 
 def _held(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, frc, rte, X, y):
     P[0], P[1], P[2] = P0[0], P0[1], P0[2]
-    power, alpha, beta, psi = leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
+    power, alpha, beta, psi = leg_force(geo, cells, i, mem, shape, P, (r, R, v, w), (defl, frc, rte, X))
     return 0, power, alpha, beta, psi, 1.0, 0.0, 0.0, 1.0
 
 
@@ -121,7 +121,7 @@ def _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
     """(FE12, FE3, FT1, FT2, cells' power, alpha, beta, psi) with the footpad at P: the ground force's parts along
     the surface and normal to it (eq. 31-32 with the normal of the terrain's relief under P, the terrain plane's
     where there is none) and the in-plane components of its part along the surface."""
-    power, alpha, beta, psi = leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
+    power, alpha, beta, psi = leg_force(geo, cells, i, mem, shape, P, (r, R, v, w), (defl, frc, rte, X))
     fe = mv(R, X[0], X[1], X[2])                                # eq. 31
     _, n0, n1, n2 = relief(geo[9], P[0], P[1])
     fe3 = fe[0] * n0 + fe[1] * n1 + fe[2] * n2

@@ -355,7 +355,8 @@ def _commit(S, y, W, g):
             m = cn[i, j]
             d, f = cd[i, j, :m], cf[i, j, :m]
             delta = dt[i, j]
-            damper = ft[i, j] - crush_cell.force(d, f, ck[i, j], 0.0, cy[i, j], mem[i, j, 0], mem[i, j, 1], delta, 0.0)
+            damper = ft[i, j] - crush_cell.force(d, f, ck[i, j], 0.0, cy[i, j], (mem[i, j, 0], mem[i, j, 1]), delta,
+                                                 0.0)
             if known:
                 energy[i, j] += crush_cell.static_work(d, f, ck[i, j], cy[i, j], mem[i, j, 0], mem[i, j, 1],
                                                        last[i, j], delta)
@@ -385,9 +386,9 @@ def commit(arrays, y, work, g):
 
 
 @njit(cache=True)
-def _leg_force_call(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
+def _leg_force_call(geo, cells, i, mem, shape, P, kin, out):
     """legs.leg_force as a call, for the rare paths (a touchdown, a lift-off): the step's paths inline it."""
-    return leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
+    return leg_force(geo, cells, i, mem, shape, P, kin, out)
 
 
 @_inner
@@ -403,8 +404,8 @@ def _switch(S, y, which, W):
     C = mem.shape[1]
     v = (y[3], y[4], y[5])
     if contact[which]:
-        _, alpha, beta, psi = _leg_force_call(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R,
-                                              v, y[10:13], dt[which], ft[which], rt[which], Xt[which])
+        _, alpha, beta, psi = _leg_force_call(geo, cells, which, mem[which], shape[which], P[which],
+                                              (y[0:3], R, v, y[10:13]), (dt[which], ft[which], rt[which], Xt[which]))
         contact[which] = 0
         if fresh or W.mt[which, 1] > 0.0:       # left on touching, or at the edge of its reach still pushed: LOCKED
             armed[which] = LOCKED
@@ -412,8 +413,8 @@ def _switch(S, y, which, W):
             gone = slack(geo, cells, which, mem[which], dt[which], Xt[which], P[which], R)
             armed[which] = BANDED if gone < 0.0 else 0
         pad_switch(mu, y, which, P, sliding, False, Xt, R, geo[9])
-        shape[which, 0], shape[which, 1], shape[which, 2] = lift_shape(geo, cells, which, mem[which], alpha, beta, psi,
-                                                                       dt[which, 0], y[0:3], R)
+        shape[which, 0], shape[which, 1], shape[which, 2] = lift_shape(geo, cells, which, mem[which],
+                                                                       (alpha, beta, psi), dt[which, 0], y[0:3], R)
         if geo[7][which] == TELESCOPING:
             _clear(S, y, which, R)
         last[which, 2 * C] = 0.0
@@ -434,8 +435,8 @@ def _switch(S, y, which, W):
         P[which, 0], P[which, 1], P[which, 2] = pad[0], pad[1], pad[2] if on_face else top
         contact[which] = 1
         sliding[which] = FACE if on_face else TOUCHED           # (re)contact slides on mu_D (eq. 33)
-        _leg_force_call(geo, cells, which, mem[which], shape[which], P[which], y[0:3], R, v, y[10:13], dt[which],
-                        ft[which], rt[which], Xt[which])
+        _leg_force_call(geo, cells, which, mem[which], shape[which], P[which], (y[0:3], R, v, y[10:13]),
+                        (dt[which], ft[which], rt[which], Xt[which]))
         pad_switch(mu, y, which, P, sliding, True, Xt, R, geo[9])
         for j in range(C):
             last[which, j], last[which, C + j] = dt[which, j], 0.0
@@ -514,7 +515,7 @@ def _monitor(S, y, t, dt_step):
             if contact[order[m]]:
                 pads[k, 0], pads[k, 1], pads[k, 2] = P[order[m], 0], P[order[m], 1], P[order[m], 2]
                 k += 1
-        margins = tipping_margins(y[0:3], y[3:6], R, y[10:13], mass, inertia, gravity, pads, True)
+        margins = tipping_margins(y[0:3], y[3:6], R, y[10:13], (mass, inertia), gravity, pads, True)
         if on_ground == n:
             if stable_by_energy(margins):                       # eq. 89-95 (QUIMOT) for every adjacent pair
                 return STABLE
@@ -547,9 +548,9 @@ def _hanging_clear(S, y, R):
             b = (b + 1) % n
         foot = free_footpad(geo, cells, i, mem[i], shape[i], y[0:3], R)
         ground = pad_ground(mu, y, i, n, geo[9], foot[0], foot[1])
-        if not (foot[2] > ground and hanging_margin(y[0:3], y[3:6], y[10:13], mass, inertia, gravity, P[order[a]],
-                                                    P[order[b]], foot, foot[2] - ground) > 0.0):   # NaN: not clear
-            return False
+        if not (foot[2] > ground and hanging_margin(y[0:3], y[3:6], y[10:13], (mass, inertia), gravity,
+                                                    (P[order[a]], P[order[b]]), foot, foot[2] - ground) > 0.0):
+            return False                                                                  # NaN: not clear
     return True
 
 

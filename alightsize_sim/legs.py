@@ -95,7 +95,7 @@ def _pick(geo, mixed, name: str):
 
 
 @njit(cache=True)
-def _stub_leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
+def _stub_leg_force(geo, cells, i, mem, shape, P, kin, out):
     return 0.0, 0.0, 0.0, 0.0
 
 
@@ -105,8 +105,8 @@ def _stub_footpad(geo, cells, i, mem, shape, r, R):
 
 
 @njit(cache=True)
-def _stub_lift(geo, cells, i, mem, alpha, beta, psi, main, r, R):
-    return alpha, beta, psi
+def _stub_lift(geo, cells, i, mem, loaded, main, r, R):
+    return loaded[0], loaded[1], loaded[2]
 
 
 @njit(cache=True)
@@ -127,24 +127,25 @@ def _kind(geo, i) -> int:
     return 0 if geo[7][i] == TELESCOPING else 1 if geo[7][i] == ARTICULATED else 2
 
 
-def leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
-    """Forces of leg i with its footpad held at P (see the kind's module); returns (cells' power, alpha, beta,
-    psi) (a tripod: its strut lengths for the last three)."""
-    return MODULES[_kind(geo, i)].leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
+def leg_force(geo, cells, i, mem, shape, P, kin, out):
+    """Forces of leg i with its footpad held at P under a capsule moving as kin = (r, R, v, w), written into
+    out = (defl, frc, rte, X) (see the kind's module); returns (cells' power, alpha, beta, psi) (a tripod: its strut
+    lengths for the last three)."""
+    return MODULES[_kind(geo, i)].leg_force(geo, cells, i, mem, shape, P, kin, out)
 
 
 def _mixed_leg_force(tel, art, tri):
-    def mixed(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
+    def mixed(geo, cells, i, mem, shape, P, kin, out):
         if geo[7][i] == ARTICULATED:
-            return art(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
+            return art(geo, cells, i, mem, shape, P, kin, out)
         if geo[7][i] == TRIPOD:
-            return tri(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
-        return tel(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
+            return tri(geo, cells, i, mem, shape, P, kin, out)
+        return tel(geo, cells, i, mem, shape, P, kin, out)
     return mixed
 
 
 @overload(leg_force, inline="always")
-def _leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
+def _leg_force(geo, cells, i, mem, shape, P, kin, out):
     return _pick(geo, _mixed_leg_force, "leg_force")
 
 
@@ -222,24 +223,24 @@ def _at_set(geo, cells, i, mem, shape):
     return _pick(geo, _mixed_at_set, "at_set")
 
 
-def lift_shape(geo, cells, i, mem, alpha, beta, psi, main, r, R):
-    """Stored free geometry of a leg lifting off with the given shape and main-cell deflection (see the kind's
-    module)."""
-    return MODULES[_kind(geo, i)].lift_shape(geo, cells, i, mem, alpha, beta, psi, main, r, R)
+def lift_shape(geo, cells, i, mem, loaded, main, r, R):
+    """Stored free geometry of a leg lifting off with the shape leg_force gave, loaded = (alpha, beta, psi), and
+    main-cell deflection `main` (see the kind's module)."""
+    return MODULES[_kind(geo, i)].lift_shape(geo, cells, i, mem, loaded, main, r, R)
 
 
 def _mixed_lift(tel, art, tri):
-    def mixed(geo, cells, i, mem, alpha, beta, psi, main, r, R):
+    def mixed(geo, cells, i, mem, loaded, main, r, R):
         if geo[7][i] == ARTICULATED:
-            return art(geo, cells, i, mem, alpha, beta, psi, main, r, R)
+            return art(geo, cells, i, mem, loaded, main, r, R)
         if geo[7][i] == TRIPOD:
-            return tri(geo, cells, i, mem, alpha, beta, psi, main, r, R)
-        return tel(geo, cells, i, mem, alpha, beta, psi, main, r, R)
+            return tri(geo, cells, i, mem, loaded, main, r, R)
+        return tel(geo, cells, i, mem, loaded, main, r, R)
     return mixed
 
 
 @overload(lift_shape)
-def _lift_shape(geo, cells, i, mem, alpha, beta, psi, main, r, R):
+def _lift_shape(geo, cells, i, mem, loaded, main, r, R):
     return _pick(geo, _mixed_lift, "lift_shape")
 
 

@@ -136,17 +136,17 @@ def edge_geometry(r, p_i, p_j, up, sense: float):
 
 
 @njit(cache=True)
-def tipping_margins(r: np.ndarray, v: np.ndarray, R: np.ndarray, omega: np.ndarray, mass: float,
-                    inertia: np.ndarray, gravity: np.ndarray, pads: np.ndarray,
-                    conservative: bool = True) -> np.ndarray:
+def tipping_margins(r: np.ndarray, v: np.ndarray, R: np.ndarray, omega: np.ndarray, body: tuple[float, np.ndarray],
+                    gravity: np.ndarray, pads: np.ndarray, conservative: bool = True) -> np.ndarray:
     """Energy margin (J) against toppling over each edge (pads[k], pads[(k+1) % n]), k = 0..n-1.
 
     margin = m |g| rise - (1/2)(I_e + m h^2) gamma_dot^2; > 0: the capsule cannot topple over that edge.
     r, v: CG position and velocity (terrain axes); R: principal -> terrain; omega: body rates (principal);
-    inertia: principal moments (3,); gravity (terrain axes, m/s^2); pads: (n, 3) footpads, n >= 2, in order
+    body: (mass, principal moments (3,)); gravity (terrain axes, m/s^2); pads: (n, 3) footpads, n >= 2, in order
     around the capsule (either sense). conservative: eq. 89 rate (report) or angular momentum about the edge.
     Degenerate edges (coincident pads, or the CG on the edge line) get -inf (never counted stable).
     """
+    mass, inertia = body
     n = pads.shape[0]
     out = np.empty(n)
     g = math.sqrt(gravity[0] ** 2 + gravity[1] ** 2 + gravity[2] ** 2)
@@ -190,14 +190,17 @@ def stable_by_energy(margins: np.ndarray) -> bool:
 
 
 @njit(cache=True)
-def hanging_margin(r: np.ndarray, v: np.ndarray, omega: np.ndarray, mass: float, inertia: np.ndarray,
-                   gravity: np.ndarray, a: np.ndarray, b: np.ndarray, foot, clear: float) -> float:
+def hanging_margin(r: np.ndarray, v: np.ndarray, omega: np.ndarray, body: tuple[float, np.ndarray],
+                   gravity: np.ndarray, edge: tuple[np.ndarray, np.ndarray], foot, clear: float) -> float:
     """Energy margin (J) of a leg hanging clear of the ground (its free footpad `foot` at height `clear` > 0
-    above the ground under it) beside the support edge through the footpads a, b of its grounded neighbours:
+    above the ground under it) beside the support edge = (a, b) through the footpads of its grounded neighbours,
+    for a capsule of body = (mass, principal moments (3,)) at r moving at v, omega (principal axes):
     the work against gravity to turn the capsule about that edge until the footpad touches, less the whole
     kinetic energy. Positive: the capsule cannot bring the leg down (first order in the small turn; the
     kinetic energy is all counted, translation included, so conservative). Not positive when the turn lowers
     the CG (the capsule falls onto that leg), the footpad lies on the edge's line or a and b coincide."""
+    mass, inertia = body
+    a, b = edge
     span = math.sqrt((b[0] - a[0]) ** 2 + (b[1] - a[1]) ** 2 + (b[2] - a[2]) ** 2)
     if not span > 0.0:
         return -1.0

@@ -61,16 +61,18 @@ def cell_force(cells, i, j, mem, delta, rate):
     """Force of cell j of leg i at deflection delta and rate, given its committed memory."""
     cd, cf, cn, ck, cc, cy = cells
     m = cn[i, j]
-    return crush_cell.force(cd[i, j, :m], cf[i, j, :m], ck[i, j], cc[i, j], cy[i, j], mem[j, 0], mem[j, 1],
+    return crush_cell.force(cd[i, j, :m], cf[i, j, :m], ck[i, j], cc[i, j], cy[i, j], (mem[j, 0], mem[j, 1]),
                             delta, rate)
 
 
 @njit(cache=True)
-def leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
-    """Forces of leg i with its footpad held at P (terrain axes) under a capsule at r, attitude R (principal ->
-    terrain), velocity v (terrain), rate w (principal); `shape` is unused (the articulated leg's interface).
-    Writes the deflections, cell forces, deflection rates and the force X on the capsule (principal axes);
-    returns (cells' power, alpha, beta, 0)."""
+def leg_force(geo, cells, i, mem, shape, P, kin, out):
+    """Forces of leg i with its footpad held at P (terrain axes) under a capsule moving as kin = (r, R, v, w): at r,
+    attitude R (principal -> terrain), velocity v (terrain), rate w (principal); `shape` is unused (the articulated
+    leg's interface). Writes into out = (defl, frc, rte, X) the deflections, cell forces, deflection rates and the
+    force X on the capsule (principal axes); returns (cells' power, alpha, beta, 0)."""
+    r, R, v, w = kin
+    defl, frc, rte, X = out
     attach, to_body, rho, pad_lever, angles, n_pads, small = geo[0], geo[1], geo[2], geo[3], geo[4], geo[5], geo[6]
     a0, a1, a2 = attach[i, 0], attach[i, 1], attach[i, 2]
     L = to_body[i]
@@ -158,11 +160,12 @@ def at_set(geo, cells, i, mem, shape):
 
 
 @njit(cache=True)
-def lift_shape(geo, cells, i, mem, alpha, beta, psi, main, r, R):
-    """Stored free geometry of a leg lifting off at tilt (alpha, beta) with axial deflection `main` (psi, r, R unused:
-    the articulated leg's interface): the tilt and the compression beyond its set it still held, so that its free
-    footpad starts where it left the terrain, not below it, and its touchdown can be found. That compression is
-    zero at a lift-off located where the leg goes slack, positive at a jump of its event function (a slide leaving
-    the leg's reach), negative for a leg leaving the grazing band short of its set (it keeps its length)."""
-    return alpha, beta, main - axial_set(cells, i, mem)
+def lift_shape(geo, cells, i, mem, loaded, main, r, R):
+    """Stored free geometry of a leg lifting off at tilt loaded = (alpha, beta, psi) (leg_force's shape) with axial
+    deflection `main` (psi, r, R unused: the articulated leg's interface): the tilt and the compression beyond its
+    set it still held, so that its free footpad starts where it left the terrain, not below it, and its touchdown
+    can be found. That compression is zero at a lift-off located where the leg goes slack, positive at a jump of its
+    event function (a slide leaving the leg's reach), negative for a leg leaving the grazing band short of its set
+    (it keeps its length)."""
+    return loaded[0], loaded[1], main - axial_set(cells, i, mem)
 

@@ -430,12 +430,14 @@ def tripod_from_params(footpad_radius: float, hardpoint_radius: float, hardpoint
 
 
 @njit(cache=True)
-def leg_force(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
+def leg_force(geo, cells, i, mem, shape, P, kin, out):
     """Forces of tripod leg i (packed as geo[10][i]) with its footpad held at P (terrain axes) under a capsule
-    at r, attitude R (principal -> terrain), velocity v (terrain), rate w (principal); `shape` is unused. Writes
-    the five cell deflections (`cell_deflections`), forces and rates and the force X = G^T T on the capsule
-    (principal axes), T = (-f0, f2 - f1, f4 - f3); returns (cells' power, Lp, l1, l2): the strut lengths are the
-    leg's shape."""
+    moving as kin = (r, R, v, w): at r, attitude R (principal -> terrain), velocity v (terrain), rate w (principal);
+    `shape` is unused. Writes into out = (defl, frc, rte, X) the five cell deflections (`cell_deflections`), forces
+    and rates and the force X = G^T T on the capsule (principal axes), T = (-f0, f2 - f1, f4 - f3); returns (cells'
+    power, Lp, l1, l2): the strut lengths are the leg's shape."""
+    r, R, v, w = kin
+    defl, frc, rte, X = out
     t = geo[10][i]
     b0, b1, b2 = mtv(R, P[0] - r[0], P[1] - r[1], P[2] - r[2])     # CG -> footpad, principal axes
     c0, c1, c2 = cross(w[0], w[1], w[2], b0, b1, b2)
@@ -470,10 +472,10 @@ def free_footpad(geo, cells, i, mem, shape, r, R):
 
 
 @njit(cache=True)
-def lift_shape(geo, cells, i, mem, alpha, beta, psi, main, r, R):
+def lift_shape(geo, cells, i, mem, loaded, main, r, R):
     """Stored free geometry of a tripod leg lifting off: the strut lengths (Lp, l1, l2) leg_force returned as its
-    (alpha, beta, psi) (main, r, R unused: the other kinds' interface)."""
-    return alpha, beta, psi
+    shape `loaded` (main, r, R unused: the other kinds' interface)."""
+    return loaded[0], loaded[1], loaded[2]
 
 
 @njit(cache=True)

@@ -72,10 +72,10 @@ def leg_shapes(scene: Scene, res: Result) -> np.ndarray:
             if not res.contact[k, i]:                  # lifted off after step k - 1: FORCE's stored geometry (a
                 # telescoping leg's held compression only places its free footpad, not needed here)
                 alpha, beta, psi = out[k - 1, i]
-                shape = np.array(lift_shape(geo, cells, i, mem, alpha, beta, psi, 0.0, y[k - 1, 0:3], R[k - 1]))
+                shape = np.array(lift_shape(geo, cells, i, mem, (alpha, beta, psi), 0.0, y[k - 1, 0:3], R[k - 1]))
                 continue
-            out[k, i] = leg_force(geo, cells, i, mem, shape, res.footpad[k, i], y[k, 0:3], R[k],
-                                  y[k, 3:6] - res.footpad_velocity[k, i], y[k, 10:13], defl, frc, rte, X)[1:]
+            kin = (y[k, 0:3], R[k], y[k, 3:6] - res.footpad_velocity[k, i], y[k, 10:13])
+            out[k, i] = leg_force(geo, cells, i, mem, shape, res.footpad[k, i], kin, (defl, frc, rte, X))[1:]
             shape = out[k, i].copy()
             miss = np.max(np.abs(defl[:m] - res.deflections[k, i, :m]))
             if not miss <= SHAPE_TOL:

@@ -17,11 +17,11 @@ def _arrays(**kw):
 
 def test_loading_follows_the_curve_and_bottoming_continues_or_yields():
     d, f, k, c, y = _arrays()
-    assert cc.force(d, f, k, c, y, 0.0, 0.0, 0.01, 0.0) == pytest.approx(15_000.0)
-    assert cc.force(d, f, k, c, y, 0.0, 0.0, -0.01, 0.0) == 0.0              # never pulls
-    assert cc.force(d, f, k, c, y, 0.0, 0.0, 0.40, 0.0) == pytest.approx(60_000 + 6e5 * 0.05)   # stiff stop
+    assert cc.force(d, f, k, c, y, (0.0, 0.0), 0.01, 0.0) == pytest.approx(15_000.0)
+    assert cc.force(d, f, k, c, y, (0.0, 0.0), -0.01, 0.0) == 0.0              # never pulls
+    assert cc.force(d, f, k, c, y, (0.0, 0.0), 0.40, 0.0) == pytest.approx(60_000 + 6e5 * 0.05)   # stiff stop
     d, f, k, c, y = _arrays(yield_force=65_000.0)
-    assert cc.force(d, f, k, c, y, 0.0, 0.0, 0.40, 0.0) == 65_000.0           # yield plateau after bottoming
+    assert cc.force(d, f, k, c, y, (0.0, 0.0), 0.40, 0.0) == 65_000.0           # yield plateau after bottoming
     assert CURVE.bottoming == 0.30
 
 
@@ -29,12 +29,12 @@ def test_unloading_spring_set_and_energy():
     d, f, k, c, y = _arrays()
     dmax, fmax = cc.commit(d, f, y, 0.0, 0.0, 0.2)
     assert (dmax, fmax) == (0.2, 30_000.0)
-    assert cc.force(d, f, k, c, y, dmax, fmax, 0.199, 0.0) == pytest.approx(30_000 - K * 0.001)
+    assert cc.force(d, f, k, c, y, (dmax, fmax), 0.199, 0.0) == pytest.approx(30_000 - K * 0.001)
     zset = cc.permanent_set(k, dmax, fmax)
     assert zset == pytest.approx(0.2 - 30_000 / K)
-    assert cc.force(d, f, k, c, y, dmax, fmax, zset - 1e-6, 0.0) == 0.0
+    assert cc.force(d, f, k, c, y, (dmax, fmax), zset - 1e-6, 0.0) == 0.0
     # Energy the spring gives back from dmax to the set: fmax^2 / (2k) in closed form.
-    back, _ = quad(lambda x: cc.force(d, f, k, c, y, dmax, fmax, x, 0.0), zset, dmax, epsabs=1e-9)
+    back, _ = quad(lambda x: cc.force(d, f, k, c, y, (dmax, fmax), x, 0.0), zset, dmax, epsabs=1e-9)
     assert back == pytest.approx(cc.elastic_energy(k, dmax, fmax, dmax), rel=1e-9)
     assert cc.elastic_energy(k, dmax, fmax, dmax) == pytest.approx(30_000 ** 2 / (2 * K))
 
@@ -43,9 +43,9 @@ def test_damper_is_limited_below_the_spring_and_never_above_fmax():
     d, f, k, c, y = _arrays(c=1e6)
     dmax, fmax = 0.2, 30_000.0
     spring = fmax - K * 0.004
-    assert cc.force(d, f, k, c, y, dmax, fmax, 0.196, -10.0) == pytest.approx(0.1 * spring)   # 0.9 limit
-    assert cc.force(d, f, k, c, y, dmax, fmax, 0.196, +10.0) == pytest.approx(min(1.9 * spring, fmax))
-    assert cc.force(d, f, k, c, y, dmax, fmax, 0.1999, +10.0) <= fmax
+    assert cc.force(d, f, k, c, y, (dmax, fmax), 0.196, -10.0) == pytest.approx(0.1 * spring)   # 0.9 limit
+    assert cc.force(d, f, k, c, y, (dmax, fmax), 0.196, +10.0) == pytest.approx(min(1.9 * spring, fmax))
+    assert cc.force(d, f, k, c, y, (dmax, fmax), 0.1999, +10.0) <= fmax
 
 
 def test_cell_model_checks_its_inputs():

@@ -276,7 +276,7 @@ def test_cell_rates_are_the_time_derivatives_of_the_deflections(name):
 
     def deflections(t):
         defl, frc, rte, X = np.zeros(C), np.zeros(C), np.zeros(C), np.zeros(3)
-        out = leg_force(geo, cells, 0, mem, shape, P, v * t, R0 @ expm(wx * t), v, w, defl, frc, rte, X)
+        out = leg_force(geo, cells, 0, mem, shape, P, (v * t, R0 @ expm(wx * t), v, w), (defl, frc, rte, X))
         return defl, rte, out
 
     d0, rate, out = deflections(0.0)
@@ -331,9 +331,9 @@ def test_compiled_code_for_one_leg_kind_takes_that_kind_alone(name, kind):
     assert (geo[4] is None) == (kind == "articulated_leg") and (geo[8] is None) == (kind == "telescoping_leg")
     module = {"telescoping_leg": telescoping_leg, "articulated_leg": articulated_leg}[kind]
     t = numba.typeof(geo)
-    assert legs._leg_force(t, *[None] * 13) is module.leg_force.py_func
+    assert legs._leg_force(t, *[None] * 7) is module.leg_force.py_func
     assert legs._free_footpad(t, *[None] * 6) is module.free_footpad.py_func
-    assert legs._lift_shape(t, *[None] * 9) is module.lift_shape.py_func
+    assert legs._lift_shape(t, *[None] * 7) is module.lift_shape.py_func
     none, arr, pad = numba.types.none, numba.typeof(np.zeros(3)), numba.typeof(pad_model(0.5, 0.5, 1.0, 1e-3))
     args = [None] * 7
     assert footpad_slip._contact_force(*args, none, *[None] * 10) is footpad_slip._held

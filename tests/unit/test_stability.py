@@ -39,7 +39,7 @@ def box_pads(a, b):
 
 
 def at_rest(r, pads, gravity=DOWN, R=I3):
-    return st.tipping_margins(r, ZERO, R, ZERO, M, INERTIA, gravity, pads)
+    return st.tipping_margins(r, ZERO, R, ZERO, (M, INERTIA), gravity, pads)
 
 
 def test_box_at_rest_margin_is_weight_times_rise_of_cg():
@@ -89,7 +89,7 @@ def test_sloping_edge_rise_matches_brute_force_rotation():
         gravity = G * rng.normal(size=3)
         gravity *= G / np.linalg.norm(gravity)
         up = -gravity / G
-        m = st.tipping_margins(r, ZERO, I3, ZERO, M, INERTIA, gravity, np.array([p_i, p_j]))
+        m = st.tipping_margins(r, ZERO, I3, ZERO, (M, INERTIA), gravity, np.array([p_i, p_j]))
         e = (p_j - p_i) / np.linalg.norm(p_j - p_i)
 
         def height(t):
@@ -113,7 +113,7 @@ def pivot_case(w, conservative):
     hvec = np.array([-a, 0.0, H])
     v = w * np.cross(e, hvec)
     omega = R.T @ (w * e)
-    m = st.tipping_margins(np.array([0.0, 0.2, H]), v, R, omega, M, INERTIA, DOWN, box_pads(a, b),
+    m = st.tipping_margins(np.array([0.0, 0.2, H]), v, R, omega, (M, INERTIA), DOWN, box_pads(a, b),
                            conservative)
     i_e = INERTIA[1] * math.cos(beta) ** 2 + INERTIA[2] * math.sin(beta) ** 2
     i_edge = i_e + M * (a * a + H * H)
@@ -270,20 +270,20 @@ def test_hanging_leg_margin_closed_form():
     not clear."""
     a, b, h = np.zeros(3), np.array([1.0, 0.0, 0.0]), 0.02
     foot, cg = np.array([0.5, -1.0, h]), np.array([0.5, 1.0, 1.0])
-    at_rest = st.hanging_margin(cg, ZERO, ZERO, M, INERTIA, DOWN, a, b, foot, h)
+    at_rest = st.hanging_margin(cg, ZERO, ZERO, (M, INERTIA), DOWN, (a, b), foot, h)
     assert at_rest == pytest.approx(M * G * h, rel=1e-12)
     for lift in (0.3, -0.03):
-        assert st.hanging_margin(cg, ZERO, ZERO, M, INERTIA, DOWN, a, b, foot + [0, 0, lift], h) == pytest.approx(
+        assert st.hanging_margin(cg, ZERO, ZERO, (M, INERTIA), DOWN, (a, b), foot + [0, 0, lift], h) == pytest.approx(
             at_rest, rel=1e-12)
     v, w = np.array([0.1, 0.0, 0.0]), np.array([0.0, 0.2, 0.0])
     kinetic = 0.5 * M * 0.01 + 0.5 * INERTIA[1] * 0.04
-    assert st.hanging_margin(cg, v, w, M, INERTIA, DOWN, a, b, foot, h) == pytest.approx(M * G * h - kinetic,
+    assert st.hanging_margin(cg, v, w, (M, INERTIA), DOWN, (a, b), foot, h) == pytest.approx(M * G * h - kinetic,
                                                                                           rel=1e-12)
-    assert st.hanging_margin(np.array([0.5, -0.5, 1.0]), ZERO, ZERO, M, INERTIA, DOWN, a, b, foot, h) < 0.0
+    assert st.hanging_margin(np.array([0.5, -0.5, 1.0]), ZERO, ZERO, (M, INERTIA), DOWN, (a, b), foot, h) < 0.0
 
 
 def test_hanging_leg_margin_of_a_degenerate_edge_is_not_clear():
     """Two grounded footpads at one point give no edge to turn about: never judged clear (no NaN)."""
     a = np.array([0.3, 0.2, 0.0])
-    assert st.hanging_margin(np.array([0.0, 0.0, 1.0]), ZERO, ZERO, M, INERTIA, DOWN, a, a.copy(),
+    assert st.hanging_margin(np.array([0.0, 0.0, 1.0]), ZERO, ZERO, (M, INERTIA), DOWN, (a, a.copy()),
                              np.array([1.0, 0.0, 0.05]), 0.05) == -1.0

@@ -54,8 +54,8 @@ def _leg_at(alpha, beta, psi, rate=(0.0, 0.0, 0.0)):
     mem = np.zeros((2, 2))
     mem[:, 0], mem[:, 1] = 1.0, 1e9          # far past both cells' maxima: unloading springs, no plateau jumps
     defl, frc, rte, X = np.zeros(2), np.zeros(2), np.zeros(2), np.zeros(3)
-    out = articulated_leg.leg_force(geo, cells, 0, mem, np.array([alpha, beta, psi]), P, np.zeros(3), np.eye(3),
-                                    np.array(rate, float), np.zeros(3), defl, frc, rte, X)
+    out = articulated_leg.leg_force(geo, cells, 0, mem, np.array([alpha, beta, psi]), P,
+                                    (np.zeros(3), np.eye(3), np.array(rate, float), np.zeros(3)), (defl, frc, rte, X))
     return X, defl, frc, out[0], out[1:], leg
 
 

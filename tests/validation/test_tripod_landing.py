@@ -75,7 +75,7 @@ def test_compiled_leg_force_matches_the_statics(cantilever):
         P = r + R @ b
         v, w = rng.normal(size=3), rng.normal(size=3)
         defl, frc, rte, X = np.zeros(5), np.zeros(5), np.zeros(5), np.zeros(3)
-        power, *lengths = leg_force(geo, cells, 0, mem, np.zeros(3), P, r, R, v, w, defl, frc, rte, X)
+        power, *lengths = leg_force(geo, cells, 0, mem, np.zeros(3), P, (r, R, v, w), (defl, frc, rte, X))
         L = strut_lengths(leg, b)
         np.testing.assert_allclose(lengths, L, rtol=1e-12)
         np.testing.assert_allclose(defl, cell_deflections(leg, L), rtol=1e-12, atol=1e-12 * L.max())
