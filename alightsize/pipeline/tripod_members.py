@@ -53,6 +53,7 @@ TRIPOD_ITEM_KEYS = ("material", "section", "weight", "size", "note", "required_d
 CORE_KEYS = ("material", "weight", "note")            # a core is weighed, not checked
 FOOTPAD = "footpad"                                   # the member (and item) the landings' footpad_mass must match
 TRIPOD_ENVELOPE = "landings"                          # the envelope of every landing, a tripod's member loads
+ROUNDOFF = 1e-9                                       # relative: a strut force below it is round-off (landing_extremes)
 CORE_WEIGHT_KEYS = ("allowance", "extra", "label", "note")
 # a sandwich footpad's checks (alightsize.checks.sandwich)
 SANDWICH_CHECKS = ("sandwich_face_stress", "sandwich_face_buckling", "sandwich_core_shear", "sandwich_core_crushing")
@@ -84,18 +85,9 @@ class TripodLoads:
         """The extremes over every landing of the stored rows' `member_loads_json`
         (alightsize.loads.histories.tripod_envelope): each strut's largest compression and tension, the largest
         knee moment, primary pin force and footpad force; 0 where never loaded so."""
-        tension: dict[str, float] = {}
-        compression: dict[str, float] = {}
-        largest: dict[str, float] = {}
-        for r in rows:
-            for d in json.loads(r.get("member_loads_json") or "[]"):
-                m = d["member"]
-                if "largest" in d:
-                    largest[m] = max(largest.get(m, 0.0), d["largest"] or 0.0)
-                else:
-                    tension[m] = max(tension.get(m, 0.0), d["tension_N"] or 0.0)
-                    compression[m] = max(compression.get(m, 0.0), -(d["compression_N"] or 0.0))
-        c, t, g = (lambda m: compression.get(m, 0.0)), (lambda m: tension.get(m, 0.0)), (lambda m: largest.get(m, 0.0))
+        best = landing_extremes(rows)
+        c, t, g = ((lambda m, sense=sense: best.get((m, sense), (0.0, ""))[0])
+                   for sense in ("compression", "tension", "largest"))
         return cls(c("primary"), (c("secondary1"), c("secondary2")), (t("secondary1"), t("secondary2")),
                    c("primary_upper"), t("primary_upper"), g("knee_moment"), g("primary_pin"), g("footpad"))
 
@@ -123,10 +115,11 @@ class TripodLoads:
                    float(np.linalg.norm(forces, axis=1).max()))
 
 
-def tripod_references(rows) -> tuple[LoadReference, ...]:
-    """The loads of `TripodLoads.from_landings(rows)`, each with the landing that set it (the first in the rows on a
-    tie): one reference per stored member and sense ever loaded, envelope TRIPOD_ENVELOPE (every landing), sense
-    "tension", "compression" or "largest" (knee_moment in N m, primary_pin and footpad in N)."""
+def landing_extremes(rows) -> dict[tuple[str, str], tuple[float, str]]:
+    """(member, sense) -> (largest magnitude, run id of the landing that set it; the first in the rows on a tie)
+    over the stored rows' `member_loads_json` (alightsize.loads.histories.tripod_envelope), sense "tension",
+    "compression" or "largest". A strut force below ROUNDOFF times the largest strut force of the landings is the
+    statics solve's round-off (about 1e-16 relative), not a load in that sense, and is left out."""
     best: dict[tuple[str, str], tuple[float, str]] = {}
     for r in rows:
         for d in json.loads(r.get("member_loads_json") or "[]"):
@@ -138,6 +131,14 @@ def tripod_references(rows) -> tuple[LoadReference, ...]:
             for sense, v in senses:
                 if v is not None and v > best.get((d["member"], sense), (0.0, ""))[0]:
                     best[(d["member"], sense)] = (v, r["run_id"])
+    floor = ROUNDOFF * max((v for (_, sense), (v, _) in best.items() if sense != "largest"), default=0.0)
+    return {k: x for k, x in best.items() if k[1] == "largest" or x[0] > floor}
+
+
+def tripod_references(rows) -> tuple[LoadReference, ...]:
+    """The loads of `TripodLoads.from_landings(rows)`, each with the landing that set it (`landing_extremes`):
+    one reference per stored member and sense ever loaded, envelope TRIPOD_ENVELOPE (every landing)."""
+    best = landing_extremes(rows)
     return tuple(LoadReference(f"{m} {sense}", TRIPOD_ENVELOPE, m, sense, 1.0, v, Extreme(v, (), LANDING + run))
                  for (m, sense), (v, run) in best.items())
 

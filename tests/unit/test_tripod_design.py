@@ -14,7 +14,7 @@ from alightsize.loads.histories import TRIPOD_FORCES, tripod_member_histories
 from alightsize.model.scene_config import read_scene
 from alightsize.pipeline.design import FOOTPAD_MASS_TOLERANCE, DesignResult, run_design
 from alightsize.pipeline.lander import read_lander
-from alightsize.pipeline.tripod_members import SANDWICH_CHECKS
+from alightsize.pipeline.tripod_members import SANDWICH_CHECKS, TripodLoads, landing_extremes, tripod_references
 from alightsize_sim.landing import simulate
 
 EXAMPLE = ROOT / "examples" / "lunar_tripod.toml"
@@ -214,3 +214,22 @@ def test_each_tripod_load_names_the_landing_that_set_it(inverted):
         assert own[key] == r["value_N"]
     footpad = tripod[(tripod["member"] == "footpad")]["value_N"].item()
     assert _check(res, "footpad", "sandwich_core_shear")["W"] == pytest.approx(footpad, rel=PARSE)
+
+
+def test_round_off_is_not_a_load_in_that_sense():
+    # A strut that only ever compresses can read +1e-13 N of "tension" from the statics solve's round-off (about
+    # 1e-16 of the 1e4 N forces here): no tension load, reference or check for it; a tension of 1e-6 of the largest
+    # strut force (far above round-off) is kept. The floor is ROUNDOFF = 1e-9 of the largest strut force.
+    def row(run, tension):
+        loads = [{"member": "secondary1", "tension_N": tension, "compression_N": -2.0e4},
+                 {"member": "primary", "tension_N": None, "compression_N": -3.0e4},
+                 {"member": "footpad", "largest": 3.1e4, "unit": "N", "at": None}]
+        return {"run_id": run, "member_loads_json": json.dumps(loads)}
+    rows = [row("a", 1e-13), row("b", 2e-13)]
+    assert ("secondary1", "tension") not in landing_extremes(rows)
+    loads = TripodLoads.from_landings(rows)
+    assert loads.secondary_tension == (0.0, 0.0) and loads.secondary_compression == (2.0e4, 0.0)
+    assert {r.key for r in tripod_references(rows)} == {"secondary1 compression", "primary compression",
+                                                        "footpad largest"}
+    kept = landing_extremes([row("a", 1e-13), row("c", 0.03)])
+    assert kept[("secondary1", "tension")] == (0.03, "c")
