@@ -129,7 +129,8 @@ def _context(res: SynthesisResult) -> dict:
         "title": f"Synthesis of {res.spec.path.stem}", "source": res.spec.path.name, "version": __version__,
         "ok": res.ok, "seed": res.spec.seed,
         "verdict": (f"the lightest feasible system found weighs {_pct(frac)} of the capsule "
-                    f"(start {_pct(res.start.fraction)}{', infeasible' if not res.start.feasible else ''})"
+                    f"(start {_pct(res.start.fraction)}{', infeasible' if not res.start.feasible else ''}"
+                    f"{' on the search sample' if res.check_rates else ''})"
                     if res.best.feasible else "no candidate met every criterion within the bounds"),
         "goal": None if goal is None
         else f"{100 * goal:.2f} % ({'met' if frac is not None and frac <= goal else 'not met'})",
