@@ -512,12 +512,13 @@ def lander_scene(path: Path, data: dict, velocity: tuple[float, float, float] | 
 def _lander_cells(data: dict) -> tuple[str, ...]:
     """The cells a lander file's own tables name: `[[item]] weight = {method = "crushable", cell = NAME}` and the
     [synthesis.free] keys `cells.NAME.KEY` (their readers check them)."""
-    items = data.get("item") if isinstance(data.get("item"), list) else []
-    weights = [i.get("weight") for i in items if isinstance(i, dict)]
+    items = data.get("item")
+    weights = [i.get("weight") for i in items if isinstance(i, dict)] if isinstance(items, list) else []
     named = [w.get("cell") for w in weights if isinstance(w, dict) and w.get("method") == "crushable"]
-    synthesis = data.get("synthesis") if isinstance(data.get("synthesis"), dict) else {}
-    free = synthesis.get("free") if isinstance(synthesis.get("free"), dict) else {}
-    named += [k.split(".")[1] for k in free if k.startswith("cells.") and k.count(".") >= 2]
+    synthesis = data.get("synthesis")
+    free = synthesis.get("free") if isinstance(synthesis, dict) else None
+    if isinstance(free, dict):
+        named += [k.split(".")[1] for k in free if k.startswith("cells.") and k.count(".") >= 2]
     return tuple(sorted({n for n in named if isinstance(n, str)}))
 
 
