@@ -3,9 +3,11 @@
 numba's on-disk cache keys a compiled function on its own file only, so editing a function in one module would
 leave stale machine code in the cache of every caller in another. A registered folder's functions are therefore
 cached in ``<user cache>/alightsize/numba-<numba version>/<folder name>-<hash of its path>/<digest of its sources>``
-(the user cache of platformdirs, e.g. ~/.cache on Linux); when numba first saves a function for new sources, the
-caches of that folder's earlier sources are removed. Nothing is written when a module is imported: numba creates
-the folder when it saves its first compiled function. A NUMBA_CACHE_DIR set by the user (numba's
+(the user cache of platformdirs, e.g. ~/.cache on Linux), so different sources never share a folder; when numba
+first saves a function for new sources, the caches of that folder's other sources that nothing has written to for
+STALE seconds are removed (a run of other sources, e.g. one started before the checkout was edited, may still be
+compiling into its own: removing that under it broke its compile). Nothing is written when a module is imported:
+numba creates the folder when it saves its first compiled function. A NUMBA_CACHE_DIR set by the user (numba's
 `config.CACHE_DIR`) wins: numba then caches everything there as it documents.
 
 The redirection is a numba cache locator placed first in numba's list (numba internals, bound by the numba
@@ -18,6 +20,7 @@ from __future__ import annotations
 import hashlib
 import os
 import shutil
+import time
 from functools import cache
 from pathlib import Path
 from typing import Any
@@ -28,6 +31,7 @@ from numba.core import config as _config
 from platformdirs import user_cache_dir
 
 _FOLDERS: set[Path] = set()
+STALE = 86400.0     # s: a cache of other sources idle this long is removed (no run compiles for a day)
 
 
 def _numba_class(name: str) -> Any:
@@ -50,6 +54,28 @@ def cache_dir(folder: Path) -> Path:
     digest = hashlib.sha256(b"".join(p.read_bytes() for p in sorted(folder.glob("*.py")))).hexdigest()[:16]
     checkout = hashlib.sha256(str(folder).encode()).hexdigest()[:12]
     return cache_root() / f"{folder.name}-{checkout}" / digest
+
+
+def _last_written(folder: Path) -> float:
+    """The latest modification time (s since the epoch) of `folder` and what it holds (0 if it is gone)."""
+    try:
+        times = [folder.stat().st_mtime]
+        for p in folder.rglob("*"):
+            try:
+                times.append(p.stat().st_mtime)
+            except OSError:                                # removed meanwhile
+                pass
+        return max(times)
+    except OSError:
+        return 0.0
+
+
+def prune(path: Path, now: float) -> None:
+    """Remove the caches beside `path` (its folder's other sources) that nothing has written to since now - STALE;
+    never `path` itself."""
+    for old in path.parent.glob("*"):
+        if old != path and now - _last_written(old) > STALE:
+            shutil.rmtree(old, ignore_errors=True)
 
 
 def _writable(path: Path) -> bool:
@@ -82,8 +108,7 @@ class _Locator(_UserProvided):
     def ensure_cache_path(self) -> None:
         path = Path(self._cache_path)
         if not path.is_dir():
-            for old in path.parent.glob("*"):              # caches of this folder's earlier sources
-                shutil.rmtree(old, ignore_errors=True)
+            prune(path, time.time())
         super().ensure_cache_path()
 
 

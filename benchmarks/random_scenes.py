@@ -27,7 +27,6 @@ import json
 import os
 import platform
 import time
-import tomllib
 from collections import Counter, defaultdict
 from concurrent.futures import ProcessPoolExecutor
 from functools import cache
@@ -36,9 +35,10 @@ from pathlib import Path
 import numpy as np
 
 from alightsize.landings.random_landings import mixed_overrides, random_landing, random_terrain
-from alightsize.model.scene_config import SceneConfig, read_scene
+from alightsize.model.scene_config import SceneConfig, read_scene, scene_document
 from alightsize.model.soils import soil_presets
 from alightsize_sim.landing import simulate
+from alightsize_sim.tripod_leg import TripodLeg
 
 ROOT = Path(__file__).resolve().parent.parent
 SCENES = ROOT / "examples" / "affdl-tr-66-33" / "scenes"
@@ -52,6 +52,7 @@ TRIPOD_KINDS = {"tripod_lunar": ROOT / "examples" / "lunar_tripod.toml",
                 "cantilever_lm": ROOT / "examples" / "lm_class.toml"}
 SEED = 20261121
 PAD_DIAMETER = 0.5                  # m: a nominal footpad (the report gives none for configuration 1)
+ROLES = {"axial": 0, "pads": 1, "upper": 0, "lower": 1}   # [legs] keys naming a cell -> its index in leg.cells
 HELD_SHARE = 0.2                    # landings kept on non-slip friction (the report's 1.5e6 / 1.0e6)
 
 
@@ -60,22 +61,26 @@ def _base(path: Path) -> SceneConfig:
     return read_scene(path)
 
 
+def _drawn_cells(leg, named: dict) -> dict:
+    """The cells a landing redraws, by their names in the file ([cells.NAME] as its [legs] names them: a tripod's
+    secondaries share two tables, a telescoping leg's pads one) -> leg 0's model of each."""
+    if isinstance(leg, TripodLeg):
+        return {named["primary"]: leg.primary, named["secondary_compression"]: leg.secondary_compression[0],
+                named["secondary_tension"]: leg.secondary_tension[0]}
+    return {named[key]: leg.cells[j] for key, j in ROLES.items() if key in named and j < len(leg.cells)}
+
+
 def mixed(seed: int, k: int, tripods: bool = False) -> tuple[str, SceneConfig, dict]:
     """Landing k of the mixed sweep: (kind, scene config, the draws beyond random_landing's)."""
     rng = np.random.default_rng([seed, k, 1])
     kinds = {**KINDS, **TRIPOD_KINDS} if tripods else KINDS
     kind = list(kinds)[int(rng.integers(len(kinds)))]
     base = _base(kinds[kind])
+    leg, named = base.scene.legs[0], scene_document(kinds[kind]).data["legs"]
+    cells = _drawn_cells(leg, named)
     limits = {}
-    if kind in TRIPOD_KINDS:     # the cells by their names in the file (a tripod's secondaries share two)
-        leg, named = base.scene.legs[0], tomllib.loads(kinds[kind].read_text())["legs"]
-        cells = {named["primary"]: leg.primary, named["secondary_compression"]: leg.secondary_compression[0],
-                 named["secondary_tension"]: leg.secondary_tension[0]}
-        if leg.is_cantilever:
-            limits[named["primary"]] = leg.secondary_attach * leg.rest_primary_length
-    else:
-        cells = {name: cell for names, leg in zip(base.cell_names, base.scene.legs)
-                 for name, cell in zip(names, leg.cells)}
+    if isinstance(leg, TripodLeg) and leg.is_cantilever:
+        limits[named["primary"]] = leg.secondary_attach * leg.rest_primary_length
     over = mixed_overrides(rng, cells, tuple(soil_presets()), massless=kind not in TRIPOD_KINDS, max_strokes=limits)
     cfg = read_scene(kinds[kind], over)
     scene = random_landing(cfg.scene, seed, k)

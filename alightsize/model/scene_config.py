@@ -101,6 +101,7 @@ class SceneDocument:
 
     path: Path
     data: dict
+    cells_used: tuple[str, ...] = ()     # cells a lander file's own tables name (its crushable items, its synthesis)
 
 
 class SceneHead(Table):
@@ -450,7 +451,7 @@ class SceneFile(Table):
     output: OutputTable = OutputTable()
 
     @model_validator(mode="after")
-    def _references(self):
+    def _references(self, info: ValidationInfo):
         legs = self.legs
         names = ("upper", "lower") if isinstance(legs, ArticulatedLegs) else \
             ("primary", "secondary_compression", "secondary_tension") if isinstance(legs, TripodLegs) else \
@@ -462,6 +463,11 @@ class SceneFile(Table):
             if name not in self.cells:
                 raise refuse("the name of a [cells.NAME] table (" + ", ".join(sorted(self.cells)) + ")",
                              repr(name), "legs." + key)
+        named = {getattr(legs, key) for key in names}
+        for name in sorted(self.cells):      # a table no leg names would be read and ignored (a misspelt override)
+            if name not in named and name not in (info.context or {}).get("cells_used", ()):
+                raise refuse("a cell a leg names (" + ", ".join(sorted(named)) + ")", "a cell nothing uses",
+                             "cells." + name)
         slips = min(self.terrain.mu_static, self.terrain.mu_dynamic) < HELD_FRICTION or self.terrain.soil is not None
         if isinstance(legs, TripodLegs) and slips and not legs.footpad_mass > 0:
             raise refuse("footpads with mass for tripod legs on ground they can slip on (their massless slide does "
@@ -500,7 +506,20 @@ def lander_scene(path: Path, data: dict, velocity: tuple[float, float, float] | 
     scene["scene"] = {k: head[k] for k in ("name", "title", "gravity") if k in head}
     if "initial" not in scene and velocity is not None:
         scene["initial"] = {"velocity": [f"{v!r} m/s" for v in velocity]}
-    return SceneDocument(path, scene)
+    return SceneDocument(path, scene, _lander_cells(data))
+
+
+def _lander_cells(data: dict) -> tuple[str, ...]:
+    """The cells a lander file's own tables name: `[[item]] weight = {method = "crushable", cell = NAME}` and the
+    [synthesis.free] keys `cells.NAME.KEY` (their readers check them)."""
+    items = data.get("item")
+    weights = [i.get("weight") for i in items if isinstance(i, dict)] if isinstance(items, list) else []
+    named = [w.get("cell") for w in weights if isinstance(w, dict) and w.get("method") == "crushable"]
+    synthesis = data.get("synthesis")
+    free = synthesis.get("free") if isinstance(synthesis, dict) else None
+    if isinstance(free, dict):
+        named += [k.split(".")[1] for k in free if k.startswith("cells.") and k.count(".") >= 2]
+    return tuple(sorted({n for n in named if isinstance(n, str)}))
 
 
 def scene_document(path: Path, depth: int = 0) -> SceneDocument:
@@ -538,7 +557,7 @@ def read_scene(source: str | Path | SceneDocument, overrides: dict[str, object] 
         root = Node(doc.path, "", data)
         for key, value in overrides.items():
             root.set_path(key, value)
-    return build_scene(doc.path, validate(SceneFile, data, str(doc.path)))
+    return build_scene(doc.path, validate(SceneFile, data, str(doc.path), cells_used=doc.cells_used))
 
 
 def build_scene(path: Path, f: SceneFile) -> SceneConfig:

@@ -427,7 +427,7 @@ def read_lander(path: str | Path, overrides: dict | None = None, root: Node | No
     rules = head.rules
     extra = material_paths(head.materials, path.parent, str(path), "lander.materials")
     document = lander_scene(path, root.data, req.envelope.nominal_velocity())
-    scene_file = validate(SceneFile, document.data, str(path))
+    scene_file = validate(SceneFile, document.data, str(path), cells_used=document.cells_used)
     scene = build_scene(path, scene_file)
     for t in ("lander", "requirements", "report", "structure", "synthesis", *SCENE_TABLES):
         root.raw(t, None)                         # read above (alightsize.synthesis reads [synthesis])

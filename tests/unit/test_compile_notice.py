@@ -4,11 +4,13 @@ import io
 import os
 import subprocess
 import sys
+import time
 
 import pytest
 from numba import njit
 
 from alightsize.common.compile_notice import compile_notice
+from alightsize_sim.cache import STALE
 
 
 def test_a_compilation_is_announced_once_and_timed():
@@ -49,7 +51,8 @@ RUN = ("import sys; sys.path.insert(0, sys.argv[1]); from alightsize.common.comp
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="platformdirs follows XDG_CACHE_HOME on Linux only")
 def test_a_cached_kernel_is_announced_on_its_first_run_only_and_cached_outside_the_package(tmp_path):
     """A registered module's kernel compiles once (the notice) and loads silently from the user cache folder
-    after; nothing lands beside the module; new sources compile again and replace the old cache."""
+    after; nothing lands beside the module; new sources compile again into a folder of their own, beside the
+    earlier sources' (a run of those may still be compiling into it), which goes once idle for STALE."""
     src, cache = tmp_path / "src", tmp_path / "cache"
     src.mkdir()
     env = {k: v for k, v in os.environ.items() if k != "NUMBA_CACHE_DIR"}
@@ -70,7 +73,14 @@ def test_a_cached_kernel_is_announced_on_its_first_run_only_and_cached_outside_t
     third = run()
     assert third[0] == "4.5" and "compiling" in third[1]
     now = list((cache / "alightsize").glob("numba-*/src-*/*"))
-    assert len(now) == 1 and now != digests                      # the earlier sources' cache removed
+    assert len(now) == 2 and digests[0] in now                   # the earlier sources' cache kept: recently written
+    (src / "kernel.py").write_text(KERNEL.format(factor="4.0"))
+    idle = time.time() - STALE - 60.0
+    for p in [digests[0], *digests[0].rglob("*")]:
+        os.utime(p, (idle, idle))
+    assert run()[0] == "6.0"
+    last = list((cache / "alightsize").glob("numba-*/src-*/*"))
+    assert len(last) == 2 and digests[0] not in last             # idle for STALE: removed; the 3.0 one kept
 
 
 def test_a_user_numba_cache_dir_wins(tmp_path):

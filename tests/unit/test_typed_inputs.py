@@ -10,6 +10,7 @@ from alightsize.common.errors import InputError
 from alightsize.model import scene_config as sc
 from alightsize.model.legs import GeometryTable
 from alightsize.model.scene_config import read_scene
+from alightsize.pipeline.lander import read_lander
 from conftest import ROOT
 
 SCENES = ROOT / "examples" / "affdl-tr-66-33" / "scenes"
@@ -114,3 +115,46 @@ def test_the_study_reference_lists_every_key_the_models_take_and_no_other():
                 "`[criteria]`": set(criteria.CriteriaTable.model_fields), "`[matrix]`": set(study.Matrix.model_fields)}
     # ("`[compare]`" first: its heading names `[runs]` too)
     assert documented(ROOT / "docs" / "reference" / "study.md", sections) == sections
+
+
+SPARE = ('\n[cells.spare]\ndeflection = ["0 m", "0.002 m", "0.1 m", "0.11 m"]\nforce = ["0 kN", "1 kN", "1 kN", '
+         '"5 kN"]\nunloading_rate = "5e5 N/m"\n')
+
+
+def test_a_cell_table_no_leg_names_is_refused(tmp_path):
+    """A [cells.NAME] table that no leg names would be read and ignored: refused, naming it and the legs' cells."""
+    p = tmp_path / "scene.toml"
+    p.write_text((SCENES / "telescoping_config1.toml").read_text(encoding="utf-8") + SPARE, encoding="utf-8")
+    with pytest.raises(InputError) as err:
+        read_scene(p)
+    assert (err.value.key, err.value.found) == ("cells.spare", "a cell nothing uses")
+    assert err.value.expected == "a cell a leg names (axial, rotational)"
+
+
+def test_an_override_of_a_cell_the_file_lacks_is_refused():
+    """An override that names a cell by a name its file does not use (the simulator's `rot1` for the file's
+    `rotational`) made a table of its own that nothing read: refused, naming it."""
+    over = {"cells.rot1.deflection": ["0 m", "0.1 m"], "cells.rot1.force": ["0 N", "1 N"],
+            "cells.rot1.unloading_rate": "1e6 N/m"}
+    with pytest.raises(InputError) as err:
+        read_scene(SCENES / "telescoping_config1.toml", over)
+    assert (err.value.key, err.value.found) == ("cells.rot1", "a cell nothing uses")
+
+
+def test_a_lander_cell_that_only_a_crushable_item_weighs_is_used(tmp_path):
+    """In a lander file a cell its [[item]] weighs as a crushable core is used, though no leg names it; without
+    the item it is refused."""
+    text = (ROOT / "examples" / "lunar_lander.toml").read_text(encoding="utf-8")
+    text = text.replace("\n[legs]", SPARE + "\n[legs]", 1)
+    item = ('\n[[item]]\nname = "Spare honeycomb"\nmaterial = "al-honeycomb"\n'
+            'weight = { method = "crushable", cell = "spare" }\n')
+    anchor = "\n# `alightsize synthesize"
+    assert SPARE in text and anchor in text
+    p = tmp_path / "lander.toml"
+    p.write_text(text.replace(anchor, item + anchor, 1), encoding="utf-8")
+    assert "spare" in read_lander(p).document.cells_used
+    assert read_scene(p).name == "lunar_lander"                  # read as a scene: its nominal landing
+    p.write_text(text, encoding="utf-8")
+    with pytest.raises(InputError) as err:
+        read_lander(p)
+    assert (err.value.key, err.value.found) == ("cells.spare", "a cell nothing uses")
