@@ -27,7 +27,7 @@ from .footpad_mass import (FACE, FLOOR, STARTED, ground_event, integrates_damper
 from .footpad_slip import contact_force, slides_by_position, slip_events
 from .rigid_body import free_flight, quat_matrix, quat_rate
 from .stability import hanging_margin, quiescence_momenta, quiescence_update, stable_by_energy, tipping_margins
-from .legs import TELESCOPING, TRIPOD, at_set, folded, free_footpad, leg_force, lift_shape, member_strike, slack
+from .legs import TELESCOPING, at_set, folded, free_footpad, leg_force, lift_shape, member_strike, slack
 from .telescoping_leg import aim
 from .terrain import FACE_GAP, clearance
 from .vec3 import cross, mtv, mv
@@ -417,11 +417,6 @@ def _switch(S, y, which, W):
                                                                        (alpha, beta, psi), dt[which, 0], y[0:3], R)
         if geo[7][which] == TELESCOPING:
             _clear(S, y, which, R)
-        elif geo[7][which] == TRIPOD:      # struts sprung back (lift_shape): kept as they were if that would put
-            # the footpad below the ground, where it could not touch down again (it would never cross zero from above)
-            foot = free_footpad(geo, cells, which, mem[which], shape[which], y[0:3], R)
-            if foot[2] < pad_ground(mu, y, which, len(contact), geo[9], foot[0], foot[1]):
-                shape[which, 0], shape[which, 1], shape[which, 2] = alpha, beta, psi
         last[which, 2 * C] = 0.0
     else:
         pad = free_footpad(geo, cells, which, mem[which], shape[which], y[0:3], R)

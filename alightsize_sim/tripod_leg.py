@@ -27,11 +27,9 @@ In the simulator the leg is massless with its footpad held at P (the slip search
 it): the strut lengths follow from P in closed form, the five cell deflections and rates from them and G, and the
 force on the capsule is X = G^T T, whose power X . (footpad velocity relative to the body) equals the cells'
 power exactly (virtual work), so the energy audit closes with no extra term. The leg's shape is its three strut
-lengths (on the ground those of the last accepted step; in the air those it left with, each sprung back to within
-its cells' permanent sets: a massless leg carries no force in the air, and between their compression and tension
-sets the struts are a mechanism that keeps them). It lifts off where the ground's normal push falls to zero
-(`slack`); friction may then still hold its footpad across that normal with its struts loaded, and their elastic
-energy is given up as it lifts (counted as absorbed).
+lengths (on the ground those of the last accepted step; in the air those it left with: a free leg whose struts
+sit between their compression and tension sets is a mechanism, and keeps them). It lifts off where the ground's
+normal push falls to zero (`slack`).
 """
 
 from __future__ import annotations
@@ -42,7 +40,7 @@ from functools import cached_property
 import numpy as np
 from numba import njit
 
-from .crush_cell import CellModel, permanent_set
+from .crush_cell import CellModel
 from .telescoping_leg import cell_force
 from .terrain import bearing_normal
 from .vec3 import cross, mtv, mv
@@ -476,17 +474,8 @@ def free_footpad(geo, cells, i, mem, shape, r, R):
 @njit(cache=True)
 def lift_shape(geo, cells, i, mem, loaded, main, r, R):
     """Stored free geometry of a tripod leg lifting off: the strut lengths (Lp, l1, l2) leg_force returned as its
-    shape `loaded` = (alpha, beta, psi), each strut sprung back to within its cells' permanent sets (a massless
-    leg in the air carries no force: one that lifts off with a strut loaded, its footpad held across the ground's
-    normal by friction, lets it go; main, r, R unused: the other kinds' interface)."""
-    alpha, beta, psi = loaded
-    t, k = geo[10][i], cells[3]
-    x0 = min(t[3, 0] - alpha, permanent_set(k[i, 0], mem[0, 0], mem[0, 1]))
-    x1 = min(max(t[3, 1] - beta, -permanent_set(k[i, 2], mem[2, 0], mem[2, 1])),
-             permanent_set(k[i, 1], mem[1, 0], mem[1, 1]))
-    x2 = min(max(t[3, 2] - psi, -permanent_set(k[i, 4], mem[4, 0], mem[4, 1])),
-             permanent_set(k[i, 3], mem[3, 0], mem[3, 1]))
-    return t[3, 0] - x0, t[3, 1] - x1, t[3, 2] - x2
+    shape `loaded` (main, r, R unused: the other kinds' interface)."""
+    return loaded[0], loaded[1], loaded[2]
 
 
 @njit(cache=True)
