@@ -110,15 +110,8 @@ def test_the_sources_are_ruff_clean():
 
 
 MAX_POSITIONAL = 8
-# Functions allowed more positional parameters, (file, name) -> why. To be emptied by regrouping the footpad
-# models' parameters (footpad_slip.py, footpad_mass.py) like the leg functions'.
-WIDE_FUNCTIONS = {
-    **{("alightsize_sim/footpad_mass.py", name): "the footpad models' parameters are not regrouped yet"
-       for name in ("pad_force", "pad_rates", "_pad_rates", "_rates", "pad_switch", "_pad_switch", "_switch",
-                    "_soil_switch", "<lambda>")},
-    **{("alightsize_sim/footpad_slip.py", name): "the footpad models' parameters are not regrouped yet"
-       for name in ("contact_force", "_contact_force", "_held", "_slipping", "_ground", "footpad_force")},
-}
+# Functions allowed more positional parameters, (file, name) -> why: none.
+WIDE_FUNCTIONS: dict[tuple[str, str], str] = {}
 
 
 def test_no_function_takes_more_than_eight_positional_parameters():
