@@ -139,12 +139,16 @@ def _integrates_dampers(mu):
 
 
 @njit(cache=True)
-def pad_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, frc, rte, X, y):
+def pad_force(leg, P0, sliding, mu, kin, out, y):
     """Leg i's forces with its footpad at P0 (held) or where its state puts it (sliding, sunk); returns the
-    tuple of footpad_slip.contact_force: (mode, cells' power, alpha, beta, psi, slip event value, 0, 0, soil
+    tuple of footpad_slip.contact_force (whose arguments it takes: leg = (geo, cells, i, mem, shape), kin = (r, R,
+    v, w), out = (P, defl, frc, rte, X)): (mode, cells' power, alpha, beta, psi, slip event value, 0, 0, soil
     event value). The slip event value is the static margin mu_S FE3 + F_p + FLOOR - FE12 while it sticks,
     |u| - band while it slides and LEAVE band - |u| in the band; the soil's is R(s) + FLOOR - FE3 while held, w
     while sinking (1 on rigid ground)."""
+    geo, cells, i, mem, shape = leg
+    r, R, v, w = kin
+    P, defl, frc, rte, X = out
     n = cells[2].shape[0]
     o = NB + 4 * i
     P[0], P[1], P[2] = P0[0], P0[1], P0[2]
@@ -264,23 +268,27 @@ def _across(z, n2, lever):
     return z / max(lever, LOCK) if z >= 0.0 else z / n2
 
 
-def pad_rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy, terrain):
+def pad_rates(S, W, power, R, y, dy):
     """Footpad state derivatives into dy, given the legs' state and the power they take from the capsule at
     held footpads; returns the power the footpads take beyond that (-fe . u summed). A no-op returning 0 without
-    footpad mass."""
-    if isinstance(mu, PadModel):
-        return _rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy, terrain)
+    footpad mass. S, W: the step loop's bundles (landing_kernel): the landing (its friction mu, cells, cell memory,
+    contact flags, footpad modes and terrain) and the legs' state at y (their forces and cell deflections, forces
+    and rates)."""
+    if isinstance(S.mu, PadModel):
+        return _rates(S, W, power, R, y, dy)
     return 0.0
 
 
 @overload(pad_rates)
-def _pad_rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy, terrain):
-    if is_pad(mu):
+def _pad_rates(S, W, power, R, y, dy):
+    if is_pad(S.field_dict["mu"]):
         return _rates
-    return lambda mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy, terrain: 0.0
+    return lambda S, W, power, R, y, dy: 0.0
 
 
-def _rates(mu, cells, mem, contact, sliding, Xt, dt, ft, rt, power, R, y, dy, terrain):
+def _rates(S, W, power, R, y, dy):
+    mu, cells, mem, contact, sliding, terrain = S.mu, S.cells, S.mem, S.contact, S.sliding, S.geo[9]
+    Xt, dt, ft, rt = W.Xt, W.dt, W.ft, W.rt
     n, C = len(contact), ft.shape[1]
     cd, cf, cn, ck, _, cy = cells
     extra, lost, other, sunk = 0.0, 0.0, power, 0.0
@@ -336,28 +344,29 @@ def _sink_rates(mu, y, dy, i, n, fe2, on):
     return bearing * w, fe2 * w
 
 
-def pad_switch(mu, y, i, P, sliding, down, Xt, R, terrain):
+def pad_switch(mu, y, i, P, sliding, down, fe, terrain):
     """A leg touching down (down) or lifting off: its footpad starts at rest where it touched (a held face
     excepted, in the band), on the soil unless on a rock or a face; back in the hole it left it bears on the
     soil there as that soil was left (plastic: held until the push passes R(s)). One lifting off drops its
     velocity in the plane (its kinetic energy counts as friction) and leaves its hole; one that was sinking (the
     leg unloaded as the footpad ran ahead into the soil) first sinks on to the depth at which the soil has taken
-    its kinetic energy (soil.sinkage_depth), as the soil alone then stops it (its weight is not modelled). Xt
-    is the leg's force just computed with the footpad at P. A no-op without footpad mass."""
+    its kinetic energy (soil.sinkage_depth), as the soil alone then stops it (its weight is not modelled). fe
+    is the leg's force on the capsule (terrain axes) just computed with the footpad at P. A no-op without footpad
+    mass."""
     if isinstance(mu, PadModel):
-        _switch(mu, y, i, P, sliding, down, Xt, R, terrain)
+        _switch(mu, y, i, P, sliding, down, fe, terrain)
 
 
 @overload(pad_switch)
-def _pad_switch(mu, y, i, P, sliding, down, Xt, R, terrain):
-    return _switch if is_pad(mu) else (lambda mu, y, i, P, sliding, down, Xt, R, terrain: None)
+def _pad_switch(mu, y, i, P, sliding, down, fe, terrain):
+    return _switch if is_pad(mu) else (lambda mu, y, i, P, sliding, down, fe, terrain: None)
 
 
-def _switch(mu, y, i, P, sliding, down, Xt, R, terrain):
+def _switch(mu, y, i, P, sliding, down, fe, terrain):
     o, n = NB + 4 * i, len(sliding)
     _stop(mu, y, i, n)
     if mu.area > 0.0:
-        _soil_switch(mu, y, i, n, P, sliding[i] == FACE, down, Xt, R, terrain)
+        _soil_switch(mu, y, i, P, sliding[i] == FACE, down, fe, terrain)
     if down:
         y[o], y[o + 1] = P[i, 0], P[i, 1]
         if sliding[i] != FACE:
@@ -365,8 +374,10 @@ def _switch(mu, y, i, P, sliding, down, Xt, R, terrain):
 
 
 @njit(cache=True)
-def _soil_switch(mu, y, i, n, P, face, down, Xt, R, terrain):
-    """pad_switch's part on soil, before the footpad's position is set (it still marks its hole)."""
+def _soil_switch(mu, y, i, P, face, down, fe, terrain):
+    """pad_switch's part on soil, before the footpad's position is set (it still marks its hole; P (n, 3): the
+    footpads)."""
+    n = len(P)
     k = _sink_at(y, n, i)
     if y[k + 3] == SINKING and y[k + 1] > 0.0:          # left sinking: the soil stops it where it takes its energy
         e = 0.5 * mu.mass * y[k + 1] ** 2
@@ -386,7 +397,6 @@ def _soil_switch(mu, y, i, n, P, face, down, Xt, R, terrain):
         y[k], y[k + 2] = 0.0, P[i, 2]
     if rock:                                                            # rocks are rigid
         return
-    fe = mv(R, Xt[i, 0], Xt[i, 1], Xt[i, 2])
     y[k + 3] = SINKING if fe[2] > _bearing(mu, y[k]) + FLOOR else HELD
 
 

@@ -89,39 +89,47 @@ def _slides_by_position(mu, contact, sliding):
     return _any_slide.py_func
 
 
-def contact_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, frc, rte, X, y):
+def contact_force(leg, P0, sliding, mu, kin, out, y):
     """footpad_force under friction mu = (mu_S, mu_D, the slide's relative tolerance), with mu None the leg's
     forces with its footpad held at P0 (no slip search), with a footpad_mass.PadModel the footpad where its
-    state y puts it (footpad_mass.pad_force); footpad_force's returns and the soil event value (1 but on soil)."""
-    return (_held if mu is None else _slipping)(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl,
-                                                frc, rte, X, y)
+    state y puts it (footpad_mass.pad_force); footpad_force's returns and the soil event value (1 but on soil).
+    leg: (geo, cells, i, mem, shape), kin: the capsule's (r, R, v, w), out: the arrays written (P, defl, frc,
+    rte, X) (see footpad_force)."""
+    return (_held if mu is None else _slipping)(leg, P0, sliding, mu, kin, out, y)
 
 
 @overload(contact_force, inline="always")
-def _contact_force(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, frc, rte, X, y):
+def _contact_force(leg, P0, sliding, mu, kin, out, y):
     if isinstance(mu, types.NoneType):
         return _held
     return pad_force.py_func if is_pad(mu) else _slipping
 
 
-def _held(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, frc, rte, X, y):
+def _held(leg, P0, sliding, mu, kin, out, y):
+    geo, cells, i, mem, shape = leg
+    P, defl, frc, rte, X = out
     P[0], P[1], P[2] = P0[0], P0[1], P0[2]
-    power, alpha, beta, psi = leg_force(geo, cells, i, mem, shape, P, (r, R, v, w), (defl, frc, rte, X))
+    power, alpha, beta, psi = leg_force(geo, cells, i, mem, shape, P, kin, (defl, frc, rte, X))
     return 0, power, alpha, beta, psi, 1.0, 0.0, 0.0, 1.0
 
 
-def _slipping(geo, cells, i, mem, shape, P0, sliding, mu, r, R, v, w, P, defl, frc, rte, X, y):
-    sl, power, alpha, beta, psi, margin, deficit, path = footpad_force(
-        geo, cells, i, mem, shape, P0, sliding, slip_events(mu), mu[0], mu[1], r, R, v, w, P, defl, frc, rte, X, mu[2])
+def _slipping(leg, P0, sliding, mu, kin, out, y):
+    sl, power, alpha, beta, psi, margin, deficit, path = footpad_force(leg, P0, sliding, slip_events(mu), mu, kin,
+                                                                       out)
     return sl, power, alpha, beta, psi, margin, deficit, path, 1.0
 
 
-@njit(cache=True)
-def _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X):
-    """(FE12, FE3, FT1, FT2, cells' power, alpha, beta, psi) with the footpad at P: the ground force's parts along
-    the surface and normal to it (eq. 31-32 with the normal of the terrain's relief under P, the terrain plane's
-    where there is none) and the in-plane components of its part along the surface."""
-    power, alpha, beta, psi = leg_force(geo, cells, i, mem, shape, P, (r, R, v, w), (defl, frc, rte, X))
+@njit(cache=True, inline="always")
+def _ground(leg, kin, out):
+    """(FE12, FE3, FT1, FT2, cells' power, alpha, beta, psi) with the footpad at P (out = (P, defl, frc, rte, X), the
+    leg's forces written to the others): the ground force's parts along the surface and normal to it (eq. 31-32
+    with the normal of the terrain's relief under P, the terrain plane's where there is none) and the in-plane
+    components of its part along the surface. Inlined (numba IR) into the slide's search (_at): as a call it
+    unpacked the leg's ~30 arrays again at each evaluation, and numba counts a reference to each (9-20 % slower)."""
+    geo, cells, i, mem, shape = leg
+    R = kin[1]
+    P, defl, frc, rte, X = out
+    power, alpha, beta, psi = leg_force(geo, cells, i, mem, shape, P, kin, (defl, frc, rte, X))
     fe = mv(R, X[0], X[1], X[2])                                # eq. 31
     _, n0, n1, n2 = relief(geo[9], P[0], P[1])
     fe3 = fe[0] * n0 + fe[1] * n1 + fe[2] * n2
@@ -147,15 +155,17 @@ def _push(t0, t1):
 @njit(cache=True)
 def _at(sl, s):
     """Excess FE12 - mu FE3 and force scale with the footpad moved by s along d from P0; False out of the leg's
-    reach. sl: the slide, (geo, cells, i, mem, shape, mu, P0, d0, d1, r, R, v, w, P, defl, frc, rte, X) (_slide).
+    reach. sl: the slide, (leg, kin, out, mu, P0, d0, d1) (_slide).
     On a rock's flank, or leaving one, the excess counts the push along the path only (across the foot of
     a rock the normal turns, and a push there may drive the footpad back), and where the path climbs a flank
     steeper than friction lets a footpad climb (n3 - mu t3 <= LOCK, t its direction: a rock's foot,
     footpad_mass._climb) the flank holds the footpad: the excess there is -1."""
-    geo, cells, i, mem, shape, mu, P0, d0, d1, r, R, v, w, P, defl, frc, rte, X = sl
+    leg, kin, out, mu, P0, d0, d1 = sl
+    geo, cells, i, mem, _ = leg
+    P, defl, _, _, X = out
     _place(geo[9], P0, d0, d1, s, P)
-    fe12, fe3, t0, t1, _, _, _, _ = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
-    if slack(geo, cells, i, mem, defl, X, P, R) < 0.0:
+    fe12, fe3, t0, t1, _, _, _, _ = _ground(leg, kin, out)
+    if slack(geo, cells, i, mem, defl, X, P, kin[1]) < 0.0:
         return -1.0, 0.0, False
     _, n0, n1, n2 = relief(geo[9], P[0], P[1])
     if n2 < 1.0 or relief(geo[9], P0[0], P0[1])[3] < 1.0:
@@ -200,7 +210,8 @@ def _refine(sl, s_lo, h_lo, s_hi, h_hi, ok_hi, tol: float) -> tuple[float, bool]
     Brent's method (Brent 1973, ch. 4: inverse quadratic interpolation, secant or bisection; steps of at least
     the tolerance, so the bracket closes). Returns (s, ok): the crossing on its friction-feasible side, or the
     edge of the reach (ok False) when no crossing is in reach."""
-    xtol = tol * sl[0][2][sl[2]]                                # the leg's reach
+    geo, _, i, _, _ = sl[0]
+    xtol = tol * geo[2][i]                                      # the leg's reach
     while not ok_hi and s_hi - s_lo > xtol:
         s_m = 0.5 * (s_lo + s_hi)
         h_m, _, ok_m = _at(sl, s_m)
@@ -252,19 +263,21 @@ def _refine(sl, s_lo, h_lo, s_hi, h_hi, ok_hi, tol: float) -> tuple[float, bool]
 
 
 @njit(cache=True)
-def footpad_force(geo, cells, i, mem, shape, P0, sliding, hold, mu_s, mu_d, r, R, v, w, P, defl, frc, rte, X, tol):
-    """Footpad position P and the leg's forces (written to defl, frc, rte, X) with friction, the slide closed to tol
-    (relative); returns (sliding 0/1, cells' power, alpha, beta, psi, static margin mu_S FE3 + FLOOR - FE12 at P0,
-    reach deficit, path error). P0 is the
-    footpad at the last accepted step; with `hold` a sticking footpad stays at P0 whatever the margin. The
-    reach deficit (m) is 0 unless the slide ended at the edge of the leg's reach with friction still
-    exceeded: then it is the excess there over the main cell's unloading rate, so that its compression less
-    the deficit falls through zero continuously when the last feasible position leaves the reach (the leg
-    lifts off there). The path error (m) estimates how far the straight slide from P0 ends from a path that
-    turns with the leg's push: half the slide times the change of the push direction along it (the sagitta
-    of a uniformly turning path), the step loop's error control for the footpad position."""
+def footpad_force(leg, P0, sliding, hold, mu, kin, out):
+    """Footpad position P and the leg's forces (written to out = (P, defl, frc, rte, X)) with friction mu = (mu_S,
+    mu_D, tol), the slide closed to tol (relative), for leg = (geo, cells, i, mem, shape) under a capsule moving as
+    kin = (r, R, v, w); returns (sliding 0/1, cells' power, alpha, beta, psi, static margin mu_S FE3 + FLOOR - FE12
+    at P0, reach deficit, path error). P0 is the footpad at the last accepted step; with `hold` a sticking footpad
+    stays at P0 whatever the margin. The reach deficit (m) is 0 unless the slide ended at the edge of the leg's
+    reach with friction still exceeded: then it is the excess there over the main cell's unloading rate, so that its
+    compression less the deficit falls through zero continuously when the last feasible position leaves the reach
+    (the leg lifts off there). The path error (m) estimates how far the straight slide from P0 ends from a path that
+    turns with the leg's push: half the slide times the change of the push direction along it (the sagitta of a
+    uniformly turning path), the step loop's error control for the footpad position."""
+    mu_s, mu_d, tol = mu[0], mu[1], mu[2]
+    P = out[0]
     P[0], P[1], P[2] = P0[0], P0[1], P0[2]
-    fe12, fe3, fe1, fe2, power, alpha, beta, psi = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
+    fe12, fe3, fe1, fe2, power, alpha, beta, psi = _ground(leg, kin, out)
     if sliding < 0:                                             # held on a vertical face (FACE)
         return sliding, power, alpha, beta, psi, 1.0, 0.0, 0.0
     margin = mu_s * max(fe3, 0.0) + FLOOR - fe12 if not sliding else 1.0   # watched only while it sticks
@@ -273,7 +286,7 @@ def footpad_force(geo, cells, i, mem, shape, P0, sliding, hold, mu_s, mu_d, r, R
     h0 = fe12 - mu_d * max(fe3, 0.0)
     if h0 <= 0.0:                                               # static limit exceeded, dynamic one not
         return 1, power, alpha, beta, psi, 1.0, 0.0, 0.0
-    return _slide((geo, cells, i, mem, shape), (r, R, v, w), (P, defl, frc, rte, X), P0, mu_d, tol, _push(fe1, fe2), h0)
+    return _slide(leg, kin, out, P0, mu_d, tol, _push(fe1, fe2), h0)
 
 
 @njit(cache=True)
@@ -281,11 +294,10 @@ def _slide(leg, kin, out, P0, mu_d, tol, push, h0):
     """The slide: the footpad moved from P0 along the leg's push (in-plane unit direction) until FE12 = mu_D FE3
     (see footpad_force). leg: (geo, cells, i, mem, shape), kin: the capsule's (r, R, v, w), out: the arrays
     written (P, defl, frc, rte, X)."""
-    geo, cells, i, mem, shape = leg
-    r, R, v, w = kin
-    P, defl, frc, rte, X = out
+    geo, cells, i, _, _ = leg
+    P = out[0]
     d0, d1 = push
-    sl = (geo, cells, i, mem, shape, mu_d, P0, d0, d1, r, R, v, w, P, defl, frc, rte, X)   # _at's slide
+    sl = (leg, kin, out, mu_d, P0, d0, d1)                      # _at's slide
     # Expand until the excess changes sign or the footpad leaves the leg's reach: steps growing fourfold, or
     # just past the secant's root when that is nearer, so that the nearest crossing (the one continuous with
     # the held position) is not stepped over.
@@ -318,7 +330,7 @@ def _slide(leg, kin, out, P0, mu_d, tol, push, h0):
         step = 4.0 * (s_lo - s_prev)
     s_end, ok_hi = _refine(sl, s_lo, h_lo, s_hi, h_hi, ok_hi, tol)
     _place(geo[9], P0, d0, d1, s_end, P)
-    fe12, fe3, t0, t1, power, alpha, beta, psi = _ground(geo, cells, i, mem, shape, P, r, R, v, w, defl, frc, rte, X)
+    fe12, fe3, t0, t1, power, alpha, beta, psi = _ground(leg, kin, out)
     deficit = 0.0 if ok_hi else max(fe12 - mu_d * max(fe3, 0.0), 0.0) / cells[3][i, 0]
     e0, e1 = _push(t0, t1)
     path = 0.5 * s_end * np.hypot(d0 - e0, d1 - e1) if fe12 > FLOOR else 0.0

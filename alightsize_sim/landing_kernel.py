@@ -176,7 +176,8 @@ def _legs(S, W, y, R):
     for i in range(len(contact)):
         if contact[i]:
             sl, pw, mt[i, 2], mt[i, 3], mt[i, 4], mt[i, 0], mt[i, 1], mt[i, 5], mt[i, 6] = contact_force(
-                geo, cells, i, mem[i], shape[i], P[i], sliding[i], mu, r, R, v, w, Pt[i], dt[i], ft[i], rt[i], Xt[i], y)
+                (geo, cells, i, mem[i], shape[i]), P[i], sliding[i], mu, (r, R, v, w),
+                (Pt[i], dt[i], ft[i], rt[i], Xt[i]), y)
             slt[i] = sl
             power += pw
         else:
@@ -192,7 +193,7 @@ def _rhs(S, y, dy, W):
     Pt, Xt = W.Pt, W.Xt
     R = quat_matrix(y[6:10])
     power = _legs(S, W, y, R)
-    power += pad_rates(S.mu, S.cells, S.mem, contact, S.sliding, Xt, W.dt, W.ft, W.rt, power, R, y, dy, S.geo[9])
+    power += pad_rates(S, W, power, R, y, dy)
     F0 = F1 = F2 = M0 = M1 = M2 = 0.0
     for i in range(len(contact)):
         if contact[i]:
@@ -412,7 +413,7 @@ def _switch(S, y, which, W):
         else:
             gone = slack(geo, cells, which, mem[which], dt[which], Xt[which], P[which], R)
             armed[which] = BANDED if gone < 0.0 else 0
-        pad_switch(mu, y, which, P, sliding, False, Xt, R, geo[9])
+        pad_switch(mu, y, which, P, sliding, False, mv(R, Xt[which, 0], Xt[which, 1], Xt[which, 2]), geo[9])
         shape[which, 0], shape[which, 1], shape[which, 2] = lift_shape(geo, cells, which, mem[which],
                                                                        (alpha, beta, psi), dt[which, 0], y[0:3], R)
         if geo[7][which] == TELESCOPING:
@@ -437,7 +438,7 @@ def _switch(S, y, which, W):
         sliding[which] = FACE if on_face else TOUCHED           # (re)contact slides on mu_D (eq. 33)
         _leg_force_call(geo, cells, which, mem[which], shape[which], P[which], (y[0:3], R, v, y[10:13]),
                         (dt[which], ft[which], rt[which], Xt[which]))
-        pad_switch(mu, y, which, P, sliding, True, Xt, R, geo[9])
+        pad_switch(mu, y, which, P, sliding, True, mv(R, Xt[which, 0], Xt[which, 1], Xt[which, 2]), geo[9])
         for j in range(C):
             last[which, j], last[which, C + j] = dt[which, j], 0.0
         last[which, 2 * C] = 1.0

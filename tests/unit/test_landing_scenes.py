@@ -335,10 +335,10 @@ def test_compiled_code_for_one_leg_kind_takes_that_kind_alone(name, kind):
     assert legs._free_footpad(t, *[None] * 6) is module.free_footpad.py_func
     assert legs._lift_shape(t, *[None] * 7) is module.lift_shape.py_func
     none, arr, pad = numba.types.none, numba.typeof(np.zeros(3)), numba.typeof(pad_model(0.5, 0.5, 1.0, 1e-3))
-    args = [None] * 7
-    assert footpad_slip._contact_force(*args, none, *[None] * 10) is footpad_slip._held
-    assert footpad_slip._contact_force(*args, arr, *[None] * 10) is footpad_slip._slipping
-    assert footpad_slip._contact_force(*args, pad, *[None] * 10) is footpad_mass.pad_force.py_func
+    args = [None] * 3
+    assert footpad_slip._contact_force(*args, none, *[None] * 3) is footpad_slip._held
+    assert footpad_slip._contact_force(*args, arr, *[None] * 3) is footpad_slip._slipping
+    assert footpad_slip._contact_force(*args, pad, *[None] * 3) is footpad_mass.pad_force.py_func
 
 
 @pytest.mark.parametrize("gravity", ['"0 m/s^2"', '"0 g_0"', '"200 m/s^2"'])

@@ -110,30 +110,21 @@ def test_the_sources_are_ruff_clean():
 
 
 MAX_POSITIONAL = 8
-# Functions allowed more positional parameters, (file, name) -> why. To be emptied by regrouping the footpad
-# models' parameters (footpad_slip.py, footpad_mass.py) like the leg functions'.
-WIDE_FUNCTIONS = {
-    **{("alightsize_sim/footpad_mass.py", name): "the footpad models' parameters are not regrouped yet"
-       for name in ("pad_force", "pad_rates", "_pad_rates", "_rates", "pad_switch", "_pad_switch", "_switch",
-                    "_soil_switch", "<lambda>")},
-    **{("alightsize_sim/footpad_slip.py", name): "the footpad models' parameters are not regrouped yet"
-       for name in ("contact_force", "_contact_force", "_held", "_slipping", "_ground", "footpad_force")},
-}
 
 
 def test_no_function_takes_more_than_eight_positional_parameters():
     """Every function and lambda of both packages takes at most MAX_POSITIONAL positional parameters (the project's
     code standard); values that travel together go as one named group (a tuple such as the capsule's motion
-    (r, R, v, w), or a bundle: alightsize_sim/bundle.py), listed exceptions aside."""
+    (r, R, v, w), or a bundle: alightsize_sim/bundle.py), with no exception."""
     wide = {}
     for package in ("alightsize", "alightsize_sim"):
         for path in sorted((ROOT / package).rglob("*.py")):
             for node in ast.walk(ast.parse(path.read_text(), str(path))):
                 if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
                     n = len(node.args.posonlyargs) + len(node.args.args)
-                    key = (path.relative_to(ROOT).as_posix(), getattr(node, "name", "<lambda>"))
-                    if n > MAX_POSITIONAL and key not in WIDE_FUNCTIONS:
-                        wide[f"{key[0]}:{node.lineno} {key[1]}"] = n
+                    name = getattr(node, "name", "<lambda>")
+                    if n > MAX_POSITIONAL:
+                        wide[f"{path.relative_to(ROOT).as_posix()}:{node.lineno} {name}"] = n
     assert not wide, wide
 
 
