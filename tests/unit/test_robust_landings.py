@@ -14,7 +14,7 @@ from alightsize.landings.random_landings import random_landing
 from alightsize.model.scene_config import read_scene
 from alightsize.pipeline.lander import read_lander
 from alightsize_sim.landing import simulate
-from alightsize_sim.terrain import Box, Step, Terrain
+from alightsize_sim.terrain import Box, Hemisphere, Step, Terrain
 
 EXAMPLES = data_dir("examples")
 ROOT = EXAMPLES.parent if (EXAMPLES.parent / "benchmarks").is_dir() else None
