@@ -127,14 +127,14 @@ def _plow(mu, y, i, n):
     return 0.0
 
 
-def integrates_dampers(mu):
-    """Whether the cells' damper work is integrated as state (footpads with mass), not summed by the trapezoid
-    rule at accepted steps."""
+def has_mass(mu):
+    """Whether the footpads have mass (mu a PadModel): their dampers' work is then integrated as state, not summed
+    by the trapezoid rule at accepted steps."""
     return isinstance(mu, PadModel)
 
 
-@overload(integrates_dampers)
-def _integrates_dampers(mu):
+@overload(has_mass)
+def _has_mass(mu):
     return (lambda mu: True) if is_pad(mu) else (lambda mu: False)
 
 

@@ -22,12 +22,12 @@ from . import crush_cell
 from .borrow import borrowed
 from .bundle import bundler
 from .footpad_mass import BAND as PAD_BAND
-from .footpad_mass import (FACE, FLOOR, STARTED, ground_event, integrates_dampers, pad_event, pad_ground, pad_rates,
+from .footpad_mass import (FACE, FLOOR, STARTED, ground_event, has_mass, pad_event, pad_ground, pad_rates,
                            pad_settle, pad_switch)
 from .footpad_slip import contact_force, slides_by_position, slip_events
 from .rigid_body import free_flight, quat_matrix, quat_rate
 from .stability import hanging_margin, quiescence_momenta, quiescence_update, stable_by_energy, tipping_margins
-from .legs import TELESCOPING, at_set, folded, free_footpad, leg_force, lift_shape, member_strike, slack
+from .legs import TELESCOPING, TRIPOD, at_set, folded, free_footpad, leg_force, lift_shape, member_strike, slack
 from .telescoping_leg import aim
 from .terrain import FACE_GAP, clearance
 from .vec3 import cross, mtv, mv
@@ -255,7 +255,7 @@ def _events(S, y, W, g, band):
         if contact[i]:
             if armed[i] <= 0 and mt[i, 1] <= 0.0:
                 g[i] += band
-        elif armed[i] == LOCKED or armed[i] == BANDED:
+        elif _past_band(S, i):
             g[i] += band
         elif armed[i] == 0:
             g[i] += min(band, GTOL)
@@ -266,6 +266,12 @@ def _events(S, y, W, g, band):
             g[3 * n + c] = rt[i, j] if contact[i] and cev[i, j, 0] else 1.0
             k = cev[i, j, 1]
             g[(3 + C) * n + c] = cells[0][i, j, k] - dt[i, j] if contact[i] and k < cells[2][i, j] else 1.0
+
+
+@_inner
+def _past_band(S, i):
+    """Whether leg i in the air touches down only the band past zero (LOCKED or BANDED)."""
+    return S.armed[i] == LOCKED or S.armed[i] == BANDED
 
 
 @njit(cache=True)
@@ -328,23 +334,17 @@ def _stage(S, y, h, K, y1, err, W, flight):
 @_inner
 def _commit(S, y, W, g):
     """Accept state y: arm legs clear of their last switch, move footpads, keep the legs' shapes, start slides
-    where the static margin is gone, add the step's work, update cell memory. energy (n, C): each cell's work
-    (exact for the rate-free force, trapezoidal for the damper). last (n, 2C + 1): deflections, damper forces and a flag
-    that they are set; cev the cells' event memory (cell_events). Returns whether a slide started (the forces at y
-    change)."""
-    geo, cells, mu, mem, contact, P, sliding, shape = S.geo, S.cells, S.mu, S.mem, S.contact, S.P, S.sliding, S.shape
-    armed, cev, energy, last = S.armed, S.cev, S.energy, S.last
-    Pt, slt, dt, ft, Xt, mt, rt = W.Pt, W.slt, W.dt, W.ft, W.Xt, W.mt, W.rt
-    cd, cf, cn, ck, cc, cy = cells
+    where the static margin is gone, add the step's work and update cell memory (_commit_cells). Returns whether a
+    slide started (the forces at y change)."""
+    geo, mu, contact, P, sliding, shape, armed = S.geo, S.mu, S.contact, S.P, S.sliding, S.shape, S.armed
+    Pt, slt, Xt, mt = W.Pt, W.slt, W.Xt, W.mt
     _events(S, y, W, g, 0.0)
-    C = mem.shape[1]
     started = False
     for i in range(len(contact)):
         if (armed[i] == 0 or armed[i] == BANDED) and g[i] > ARM:
             armed[i] = 1
         if not contact[i]:
             continue
-        known = last[i, 2 * C] > 0.0
         for c in range(3):
             P[i, c], shape[i, c] = Pt[i, c], mt[i, 2 + c]
         sliding[i] = slt[i]
@@ -352,26 +352,40 @@ def _commit(S, y, W, g):
             started = pad_event(mu, y, i, P, sliding, Xt, geo[9]) or started
         elif pad_settle(mu, y, i, P, sliding, Xt, geo[9]):
             started = True
-        for j in range(1 + geo[5][i]):
-            m = cn[i, j]
-            d, f = cd[i, j, :m], cf[i, j, :m]
-            delta = dt[i, j]
-            damper = ft[i, j] - crush_cell.force(d, f, ck[i, j], 0.0, cy[i, j], (mem[i, j, 0], mem[i, j, 1]), delta,
-                                                 0.0)
-            if known:
-                energy[i, j] += crush_cell.static_work(d, f, ck[i, j], cy[i, j], mem[i, j, 0], mem[i, j, 1],
-                                                       last[i, j], delta)
-                if not integrates_dampers(mu):
-                    energy[i, j] += 0.5 * (damper + last[i, C + j]) * (delta - last[i, j])
-            if delta > mem[i, j, 0]:                  # a new largest stroke: watch its turn while it rises
-                cev[i, j, 0] = delta > ARM and rt[i, j] > 0.0
-            elif delta < mem[i, j, 0]:
-                cev[i, j, 0] = 0
-            mem[i, j, 0], mem[i, j, 1] = crush_cell.commit(d, f, cy[i, j], mem[i, j, 0], mem[i, j, 1], delta)
-            cev[i, j, 1] = _next_corner(cells, i, j, mem[i, j, 0], cev[i, j, 1])
-            last[i, j], last[i, C + j] = delta, damper
-        last[i, 2 * C] = 1.0
+        _commit_cells(S, W, i, True)
     return started
+
+
+@_inner
+def _commit_cells(S, W, i, damped):
+    """Add the work of leg i's cells since their last commit and update their memory, from the leg state W.
+    energy (n, C): each cell's work, exact for the rate-free force, the damper's by the trapezoid rule in its
+    deflection when `damped` (footpads with mass integrate it as state): not over a massless footpad's slide that
+    jumped, which takes no time (the damper's force times that jump would count work it never did). last (n,
+    2C + 1): deflections, damper forces and a flag that they are set; cev the cells' event memory (cell_events)."""
+    cells, mem, cev, energy, last = S.cells, S.mem, S.cev, S.energy, S.last
+    dt, ft, rt = W.dt, W.ft, W.rt
+    cd, cf, cn, ck, cc, cy = cells
+    C = mem.shape[1]
+    known = last[i, 2 * C] > 0.0
+    for j in range(1 + S.geo[5][i]):
+        m = cn[i, j]
+        d, f = cd[i, j, :m], cf[i, j, :m]
+        delta = dt[i, j]
+        damper = ft[i, j] - crush_cell.force(d, f, ck[i, j], 0.0, cy[i, j], (mem[i, j, 0], mem[i, j, 1]), delta, 0.0)
+        if known:
+            energy[i, j] += crush_cell.static_work(d, f, ck[i, j], cy[i, j], mem[i, j, 0], mem[i, j, 1], last[i, j],
+                                                   delta)
+            if damped and not has_mass(S.mu):
+                energy[i, j] += 0.5 * (damper + last[i, C + j]) * (delta - last[i, j])
+        if delta > mem[i, j, 0]:                  # a new largest stroke: watch its turn while it rises
+            cev[i, j, 0] = delta > ARM and rt[i, j] > 0.0
+        elif delta < mem[i, j, 0]:
+            cev[i, j, 0] = 0
+        mem[i, j, 0], mem[i, j, 1] = crush_cell.commit(d, f, cy[i, j], mem[i, j, 0], mem[i, j, 1], delta)
+        cev[i, j, 1] = _next_corner(cells, i, j, mem[i, j, 0], cev[i, j, 1])
+        last[i, j], last[i, C + j] = delta, damper
+    last[i, 2 * C] = 1.0
 
 
 @njit(cache=True)
@@ -400,7 +414,7 @@ def _switch(S, y, which, W):
     armed, last = S.armed, S.last
     dt, ft, Xt, rt = W.dt, W.ft, W.Xt, W.rt
     R = quat_matrix(y[6:10])
-    locked, fresh = armed[which] == LOCKED or armed[which] == BANDED, armed[which] == FRESH
+    locked, fresh = _past_band(S, which), armed[which] == FRESH
     armed[which] = FRESH
     C = mem.shape[1]
     v = (y[3], y[4], y[5])
@@ -412,7 +426,11 @@ def _switch(S, y, which, W):
             armed[which] = LOCKED
         else:
             gone = slack(geo, cells, which, mem[which], dt[which], Xt[which], P[which], R)
-            armed[which] = BANDED if gone < 0.0 else 0
+            # BANDED: left the band short of its set, where its main cell carries no force. A tripod's struts hold
+            # its footpad where they left it: touching again the band past zero, moved up by it onto the surface,
+            # they would be stroked by the band (18 kN at 1.8e8 N/m), an energy from nothing given back as it
+            # leaves again; it touches at zero.
+            armed[which] = BANDED if gone < -0.5 * S.ctl[C_BAND] and geo[7][which] != TRIPOD else 0
         pad_switch(mu, y, which, P, sliding, False, mv(R, Xt[which, 0], Xt[which, 1], Xt[which, 2]), geo[9])
         shape[which, 0], shape[which, 1], shape[which, 2] = lift_shape(geo, cells, which, mem[which],
                                                                        (alpha, beta, psi), dt[which, 0], y[0:3], R)
@@ -867,6 +885,8 @@ def _accept(S, T, W, H, y, t, h_acc, forced):
     # after that its slides go by this rule too, even before its first step longer than event_tol (two legs
     # touching together at a free-play cell's corner traded a slide at one instant while both were FRESH).
     short = h_acc <= ctl[C_EVENTTOL] and slides_by_position(S.mu, contact, sliding)
+    start = np.empty((0, 3))                       # the footpads before a slide jumped here (when one did)
+    jumped = 0                                     # which legs' slides jumped (bits)
     before = sliding.copy() if short else sliding
     changed = _apply(S, W, y, T.g1, forced)
     if short:
@@ -888,6 +908,9 @@ def _accept(S, T, W, H, y, t, h_acc, forced):
         # lands, so that the step's slide and its path error vanish with h.
         for i in range(n):
             if contact[i] and slt[i]:
+                if len(start) == 0:
+                    start = P.copy()
+                jumped |= 1 << i
                 P[i, 0], P[i, 1], P[i, 2] = Pt[i, 0], Pt[i, 1], Pt[i, 2]
     _copy1(H.dy[k], K[0])
     cnt[K_HIST] = k + 1
@@ -900,14 +923,28 @@ def _accept(S, T, W, H, y, t, h_acc, forced):
     # So does a footpad caught on a vertical face that its leg pulls off it: _events holds it there for its
     # first step (FRESH), since one dragged along the face, its footpad pulled off it by the drag while its free
     # footpad still moves into the face, would otherwise touch and leave again at one instant without end.
+    # One whose slide jumped here leaves from where the jump started, as committed: the jump (no step, no work
+    # of the capsule) would change its cells' deflections uncommitted, and they would land again so stroked, an
+    # energy created from nothing and given back by the cells (a grazing touchdown whose push slides the footpad
+    # centimetres to the edge of its reach).
     for i in range(n):
         if contact[i] and (W.mt[i, 1] > 0.0 or sliding[i] == FACE) and g_prev[i] <= 0.0:
+            if jumped >> i & 1:
+                P[i, 0], P[i, 1], P[i, 2] = start[i, 0], start[i, 1], start[i, 2]
             _switch(S, y, i, W)
             armed[i] = LOCKED
             _rhs(S, y, K[0], W)
             cnt[K_RHS] += 1
             _copy1(H.dy[k], K[0])
             _events(S, y, W, g_prev, band)
+    # A jump that stays on the ground is committed as a step of its own: its cells' static work (the slide stops
+    # where the push along it meets friction, so it never adds to their energy) and no damper work (it takes
+    # no time).
+    for i in range(n):
+        if contact[i] and jumped >> i & 1:
+            _leg_force_call(S.geo, S.cells, i, S.mem[i], S.shape[i], P[i], (y[0:3], quat_matrix(y[6:10]),
+                            (y[3], y[4], y[5]), y[10:13]), (W.dt[i], W.ft[i], W.rt[i], W.Xt[i]))
+            _commit_cells(S, W, i, False)
 
 
 @_phase

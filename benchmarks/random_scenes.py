@@ -14,7 +14,8 @@ the plane, or one random step or rock within the leg span (--terrain), footpads 
 that shipped soil under nominal 0.5 m footpads (--soil, needs --footpad-mass).
 
 Reports the outcome counts (per kind in the mixed sweep), failures (must be none; a landing whose cell gave back
-more energy than it stored counts as one, also listed per kind), the worst energy closure (per kind),
+more energy than it stored counts as one, also listed per kind, and so does one whose footpad-terrain
+interface gave energy), the worst energy closure (per kind),
 and the wall time per landing and per simulated second.
 Usage: python benchmarks/random_scenes.py [-n 1000] [--t-final 1.0] [--workers 2] [--mixed [--tripods] | [--terrain]
 [--footpad-mass KG] [--soil NAME]] [--seed N] [--first K] [--json FILE]
@@ -112,6 +113,11 @@ def one(k: int, t_final: float, features: bool = False, footpad_mass: float = 0.
             "closure_rel": res.energy["closure_rel"], "finite": bool(np.isfinite(res.y).all()),
             "given_back": bool(res.energy["cell_absorbed_min_J"]
                                < -GIVEN_BACK * (res.energy["initial_J"] + max(res.energy["potential_change_J"], 0.0))),
+            # the footpad-terrain interface (slip) only takes energy: below zero, the cells took more than the legs
+            # took from the capsule (closure cannot see it with massless legs)
+            "interface_gives": bool(res.energy["friction_J"]
+                                    < -GIVEN_BACK * (res.energy["initial_J"]
+                                                     + max(res.energy["potential_change_J"], 0.0))),
             "cell_absorbed_min_J": res.energy["cell_absorbed_min_J"],
             "soil": scene.soil.name if scene.soil else None, "footpad_mass": scene.footpad_mass,
             "gravity": float(np.linalg.norm(scene.gravity)), "held": scene.mu_static >= 1e3,
@@ -163,7 +169,9 @@ def main() -> None:
            "outcomes": dict(Counter(r["status"] for r in runs)),
            "outcomes_by_kind": {k: dict(v) for k, v in sorted(by_kind.items())},
            "on_soil": sum(r["soil"] is not None for r in runs),
-           "failed": [r["k"] for r in runs if r["status"] == "failed" or not r["finite"] or r["given_back"]],
+           "failed": [r["k"] for r in runs if r["status"] == "failed" or not r["finite"] or r["given_back"]
+                      or r["interface_gives"]],
+           "interface_giving": [r["k"] for r in runs if r["interface_gives"]],
            "cells_giving_back_by_kind": {k: [r["k"] for r in runs if r["kind"] == k and r["given_back"]]
                                          for k in sorted(by_kind)},
            "closure_rel_max": max(r["closure_rel"] for r in runs),
