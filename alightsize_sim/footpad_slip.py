@@ -159,7 +159,9 @@ def _at(sl, s):
     On a rock's flank, or leaving one, the excess counts the push along the path only (across the foot of
     a rock the normal turns, and a push there may drive the footpad back), and where the path climbs a flank
     steeper than friction lets a footpad climb (n3 - mu t3 <= LOCK, t its direction: a rock's foot,
-    footpad_mass._climb) the flank holds the footpad: the excess there is -1."""
+    footpad_mass._climb) the flank holds the footpad: the excess there is -1. On the plane, where the leg's push
+    has turned against the path the footpad is out of reach: sliding on, it would work against the leg, storing in
+    its cells energy the capsule never gave (a touchdown slide of a metre in a free fall, crushing the pads)."""
     leg, kin, out, mu, P0, d0, d1 = sl
     geo, cells, i, mem, _ = leg
     P, defl, _, _, X = out
@@ -175,6 +177,8 @@ def _at(sl, s):
             return -1.0, fe12 + abs(fe3), True
         along = -(t0 * d0 + t1 * d1 - (t0 * n0 + t1 * n1) / n2 * rise) / m   # the push along the path (FT . n = 0)
         return along - mu * max(fe3, 0.0), fe12 + abs(fe3), True
+    if t0 * d0 + t1 * d1 > 0.0:                 # the push turned against the path: no further in reach (see above)
+        return -1.0, 0.0, False
     return fe12 - mu * max(fe3, 0.0), fe12 + abs(fe3), True
 
 

@@ -361,7 +361,10 @@ def _commit_cells(S, W, i, damped):
     """Add the work of leg i's cells since their last commit and update their memory, from the leg state W.
     energy (n, C): each cell's work, exact for the rate-free force, the damper's by the trapezoid rule in its
     deflection when `damped` (footpads with mass integrate it as state): not over a massless footpad's slide that
-    jumped, which takes no time (the damper's force times that jump would count work it never did). last (n,
+    jumped, which takes no time (the damper's force times that jump would count work it never did), and never
+    negative: a damper only dissipates. Its force follows the leg's rate with the footpad held; where a massless
+    footpad slides, the deflection can fall while that rate rises, and the product, up to -280 J in a landing
+    (docs/notes/simulator-log.md), is the slide's work (the interface's remainder), not the damper's. last (n,
     2C + 1): deflections, damper forces and a flag that they are set; cev the cells' event memory (cell_events)."""
     cells, mem, cev, energy, last = S.cells, S.mem, S.cev, S.energy, S.last
     dt, ft, rt = W.dt, W.ft, W.rt
@@ -377,7 +380,7 @@ def _commit_cells(S, W, i, damped):
             energy[i, j] += crush_cell.static_work(d, f, ck[i, j], cy[i, j], mem[i, j, 0], mem[i, j, 1], last[i, j],
                                                    delta)
             if damped and not has_mass(S.mu):
-                energy[i, j] += 0.5 * (damper + last[i, C + j]) * (delta - last[i, j])
+                energy[i, j] += max(0.5 * (damper + last[i, C + j]) * (delta - last[i, j]), 0.0)
         if delta > mem[i, j, 0]:                  # a new largest stroke: watch its turn while it rises
             cev[i, j, 0] = delta > ARM and rt[i, j] > 0.0
         elif delta < mem[i, j, 0]:
@@ -451,7 +454,11 @@ def _switch(S, y, which, W):
             if caught[2] != shape[which, 2]:
                 shape[which, 0], shape[which, 1], shape[which, 2] = caught
                 pad = free_footpad(geo, cells, which, mem[which], shape[which], y[0:3], R)
-        P[which, 0], P[which, 1], P[which, 2] = pad[0], pad[1], pad[2] if on_face else top
+        # A massless telescoping footpad touching the band past zero (LOCKED, BANDED) stays where its leg put it,
+        # within the band below the surface: raised onto it, its main cell would jump by the band (18 kN at 1.8e8
+        # N/m), an energy from nothing given back as it leaves again.
+        inside = locked and not has_mass(mu) and geo[7][which] == TELESCOPING
+        P[which, 0], P[which, 1], P[which, 2] = pad[0], pad[1], pad[2] if on_face or inside else top
         contact[which] = 1
         sliding[which] = FACE if on_face else TOUCHED           # (re)contact slides on mu_D (eq. 33)
         _leg_force_call(geo, cells, which, mem[which], shape[which], P[which], (y[0:3], R, v, y[10:13]),
@@ -476,7 +483,10 @@ def _clear(S, y, i, R):
     given back by its cell."""
     n = len(S.contact)
     foot = free_footpad(S.geo, S.cells, i, S.mem[i], S.shape[i], y[0:3], R)
-    gap = foot[2] - pad_ground(S.mu, y, i, n, S.geo[9], foot[0], foot[1])
+    # A LOCKED or BANDED leg touches only the band past zero: a footpad within half of it below the ground (one
+    # that touched down there and was held inside) is found and stays where it is.
+    floor = -0.5 * S.ctl[C_BAND] if _past_band(S, i) else 0.0
+    gap = foot[2] - pad_ground(S.mu, y, i, n, S.geo[9], foot[0], foot[1]) - floor
     if gap >= 0.0:
         return
     target = (foot[0], foot[1], foot[2] - gap)
@@ -486,7 +496,7 @@ def _clear(S, y, i, R):
         while not found and radius <= FACE_GAP:
             for k in range(16):
                 x, yy = foot[0] + radius * np.cos(k * np.pi / 8.0), foot[1] + radius * np.sin(k * np.pi / 8.0)
-                if foot[2] > pad_ground(S.mu, y, i, n, S.geo[9], x, yy):
+                if foot[2] > pad_ground(S.mu, y, i, n, S.geo[9], x, yy) + floor:
                     target, found = (x, yy, foot[2]), True
                     break
             radius *= 4.0
@@ -987,6 +997,7 @@ def run(arrays, y, t, history, scratch):
         flight = ctl[C_FLIGHT] > 0.0 and np.sum(S.contact) == 0
         if flight:
             h = ctl[C_MAXSTEP]
+        h_free = h
         h = min(h, t_final - t)
         law = (fixed, flight, weight)
         passed, e = _try_step(S, T, W, y, h, law, e)
@@ -1012,6 +1023,11 @@ def run(arrays, y, t, history, scratch):
         t += h_acc
         _accept(S, T, W, H, y, t, h_acc, forced)
         h = _next_h(S, h, e, j, fixed, flight)
+        # A step cut short to end at t_final (a remainder of 1e-15 s at worst) does not shrink the next call's
+        # first step (below 1e-14 s it would end that call as failed at once).
+        if h_free > h_acc and j < 0 and not (fixed or flight):
+            h = max(h, h_free)
+            S.run_state[S_H] = h
         status = _monitor(S, y, t, h_acc)
         if status >= 0:
             return status, t

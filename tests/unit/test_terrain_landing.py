@@ -148,7 +148,8 @@ def test_a_footpad_on_a_rocks_flank_slides_off_or_holds_and_the_body_stays_clear
     `offset` radii beyond leg 1's footpad (on its top, on its flank, at its edge, just off it), massless and 5 lb
     footpads. A footpad on the flank slides down it or is held as friction and its slope say, and never enters
     the rock or the ground: checked every 10 ms, each footpad on the ground is on or above the surface under it
-    (1e-9 m: round-off of the relief's height) and each free one above it (by the grazing band, where it touches).
+    (1e-9 m: round-off of the relief's height; a massless one that touched again the grazing band past zero stays
+    where its leg put it, within the band) and each free one above it (by the grazing band, where it touches).
     The landing settles (energy criterion) on all four legs. Energy rules out body contact: three legs stroking to
     the end of their 30 kN plateau take more work than the landing brings falling that far, and that fall is short
     of the body point's clearance over the rock (asserted from the scene's numbers), so the body cannot touch
@@ -175,7 +176,7 @@ def test_a_footpad_on_a_rocks_flank_slides_off_or_holds_and_the_body_stays_clear
         status, t = run.loop(y, t)
         on = run.contact == 1
         gaps = run.P[:, 2] - np.array([height(packed, *p[:2]) for p in run.P])
-        assert np.all(gaps[on] >= -1e-9), (t, gaps, run.contact)
+        assert np.all(gaps[on] >= (-1e-9 if mass > 0.0 else -lk.BAND - 1e-9)), (t, gaps, run.contact)
         assert np.all(run.heights(y[0:3], quat_matrix(y[6:10]))[~on] >= -ctl.contact_band - 1e-9), t
         if status != lk.END:
             break
