@@ -433,7 +433,7 @@ def _switch(S, y, which, W):
             # its footpad where they left it: touching again the band past zero, moved up by it onto the surface,
             # they would be stroked by the band (18 kN at 1.8e8 N/m), an energy from nothing given back as it
             # leaves again; it touches at zero.
-            armed[which] = BANDED if gone < -0.5 * S.ctl[C_BAND] and geo[7][which] != TRIPOD else 0
+            armed[which] = BANDED if gone < 0.0 and geo[7][which] != TRIPOD else 0
         pad_switch(mu, y, which, P, sliding, False, mv(R, Xt[which, 0], Xt[which, 1], Xt[which, 2]), geo[9])
         shape[which, 0], shape[which, 1], shape[which, 2] = lift_shape(geo, cells, which, mem[which],
                                                                        (alpha, beta, psi), dt[which, 0], y[0:3], R)
@@ -895,7 +895,6 @@ def _accept(S, T, W, H, y, t, h_acc, forced):
     # after that its slides go by this rule too, even before its first step longer than event_tol (two legs
     # touching together at a free-play cell's corner traded a slide at one instant while both were FRESH).
     short = h_acc <= ctl[C_EVENTTOL] and slides_by_position(S.mu, contact, sliding)
-    start = np.empty((0, 3))                       # the footpads before a slide jumped here (when one did)
     jumped = 0                                     # which legs' slides jumped (bits)
     before = sliding.copy() if short else sliding
     changed = _apply(S, W, y, T.g1, forced)
@@ -918,8 +917,6 @@ def _accept(S, T, W, H, y, t, h_acc, forced):
         # lands, so that the step's slide and its path error vanish with h.
         for i in range(n):
             if contact[i] and slt[i]:
-                if len(start) == 0:
-                    start = P.copy()
                 jumped |= 1 << i
                 P[i, 0], P[i, 1], P[i, 2] = Pt[i, 0], Pt[i, 1], Pt[i, 2]
     _copy1(H.dy[k], K[0])
@@ -933,28 +930,24 @@ def _accept(S, T, W, H, y, t, h_acc, forced):
     # So does a footpad caught on a vertical face that its leg pulls off it: _events holds it there for its
     # first step (FRESH), since one dragged along the face, its footpad pulled off it by the drag while its free
     # footpad still moves into the face, would otherwise touch and leave again at one instant without end.
-    # One whose slide jumped here leaves from where the jump started, as committed: the jump (no step, no work
-    # of the capsule) would change its cells' deflections uncommitted, and they would land again so stroked, an
-    # energy created from nothing and given back by the cells (a grazing touchdown whose push slides the footpad
-    # centimetres to the edge of its reach).
+    # A massless footpad's slide that jumped here (no step, no work of the capsule) is committed as a step of its
+    # own (footpads with mass are placed by their state, not by P): its cells' static work (the slide stops where
+    # the leg's push turns against its path, so it never adds to their energy) and no damper work (it takes no
+    # time). Uncommitted, a leg leaving at once kept the jump's stroke and gave it back after its next touchdown
+    # (a grazing touchdown whose slide ran centimetres to the edge of its reach).
+    for i in range(n):
+        if contact[i] and jumped >> i & 1 and not has_mass(S.mu):
+            _leg_force_call(S.geo, S.cells, i, S.mem[i], S.shape[i], P[i], (y[0:3], quat_matrix(y[6:10]),
+                            (y[3], y[4], y[5]), y[10:13]), (W.dt[i], W.ft[i], W.rt[i], W.Xt[i]))
+            _commit_cells(S, W, i, False)
     for i in range(n):
         if contact[i] and (W.mt[i, 1] > 0.0 or sliding[i] == FACE) and g_prev[i] <= 0.0:
-            if jumped >> i & 1:
-                P[i, 0], P[i, 1], P[i, 2] = start[i, 0], start[i, 1], start[i, 2]
             _switch(S, y, i, W)
             armed[i] = LOCKED
             _rhs(S, y, K[0], W)
             cnt[K_RHS] += 1
             _copy1(H.dy[k], K[0])
             _events(S, y, W, g_prev, band)
-    # A jump that stays on the ground is committed as a step of its own: its cells' static work (the slide stops
-    # where the push along it meets friction, so it never adds to their energy) and no damper work (it takes
-    # no time).
-    for i in range(n):
-        if contact[i] and jumped >> i & 1:
-            _leg_force_call(S.geo, S.cells, i, S.mem[i], S.shape[i], P[i], (y[0:3], quat_matrix(y[6:10]),
-                            (y[3], y[4], y[5]), y[10:13]), (W.dt[i], W.ft[i], W.rt[i], W.Xt[i]))
-            _commit_cells(S, W, i, False)
 
 
 @_phase
