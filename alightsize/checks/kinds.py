@@ -16,8 +16,9 @@ from alightsize.checks import plates, sandwich
 from alightsize.checks import stress
 from alightsize.checks.rules import RULES, DEFAULT_RULES, Rules
 from alightsize.common.config import Node, _describe
-from alightsize.common.typed import Integer, Quantity, Sign, Table, Tagged, quantity, refuse, validate
+from alightsize.common.typed import Integer, Quantity, Sign, Table, Tagged, nested, quantity, refuse, validate
 from alightsize.common.trace import Step
+from alightsize.loads.quasi_static import ForceRef, Reference
 from alightsize.model.materials import Material
 from alightsize.model.sections import Section, given
 from alightsize.common.units import fmt
@@ -57,11 +58,12 @@ class Check:
 
 # ---------------------------------------------------------------- check tables (typed, chosen by `kind`)
 
-def _force(value: Any, info: ValidationInfo, sign: Sign) -> float:
-    """A force with units, or (where the item's reader allows them) an envelope reference read as a `ForceRef`."""
-    node = (info.context or {}).get("node")
-    if isinstance(value, dict) and node is not None and "force_reference" in node.context:
-        return node.context["force_reference"](node, info.field_name, value)
+def _force(value: Any, info: ValidationInfo, sign: Sign, index: str = "") -> float:
+    """A force with units, or an envelope reference table read as a `ForceRef` (its names are checked once the
+    design is read: `check_references`)."""
+    if isinstance(value, dict):
+        assert info.context is not None and info.field_name is not None     # `read_check` gives the check's path
+        return ForceRef(f"{info.context['where']}.{info.field_name}{index}", nested(Reference, value))
     return quantity(value, "force", sign)
 
 
@@ -71,9 +73,11 @@ def _forces(value: Any, info: ValidationInfo) -> tuple[float, ...]:
     out = []
     for i, v in enumerate(value):
         try:
-            out.append(_force(v, info, "any"))
+            out.append(_force(v, info, "any", f"[{i}]"))
         except PydanticCustomError as exc:
-            raise refuse((exc.context or {})["expected"], _describe(v), f"[{i}]") from None
+            ctx = exc.context or {}
+            below = f"[{i}]" + (f".{ctx['key']}" if ctx["key"] else "")        # an element, or a key of its table
+            raise refuse(ctx["expected"], ctx["found"] or _describe(v), below) from None
     return tuple(out)
 
 
@@ -1098,7 +1102,7 @@ def read_check(node: Node, rules: Rules = RULES[DEFAULT_RULES]) -> Check:
     retired = node.raw("kind", None)
     if isinstance(retired, str) and retired in RETIRED:
         raise node.error("kind", *RETIRED[retired])
-    t = validate(CheckTable, node.data, node.file, node.path, node=node).root
+    t = validate(CheckTable, node.data, node.file, node.path, where=node.path).root
     params = KINDS[t.kind][0](t, rules, node)
     replaces = {key: dim for key, dim in STANDS_IN.get(t.kind, {}).items() if node.has(key)}
     return Check(t.kind, params, node.path, t.note, replaces)

@@ -191,6 +191,16 @@ def input_error(exc: ValidationError, data: Any, file: str, path: str = "") -> I
     return InputError(file, key, expected, found)
 
 
+def nested(model: type[BaseModel], value: Any) -> Any:
+    """`value` validated as `model` inside another validator (a value of one of several forms); an error is raised
+    at its key below the value."""
+    try:
+        return model.model_validate(value)
+    except ValidationError as exc:
+        e = input_error(exc, value, "")
+        raise refuse(e.expected, e.found, e.key or None) from None
+
+
 def validate(model: type[BaseModel], data: Any, file: str, path: str = "", **context):
     """`data` (a TOML table at key path `path`) as `model`, its validators given `context` (and the file); any
     problem is an InputError naming the key."""

@@ -3,23 +3,25 @@ telescoping free body (App. III), and the references through which design checks
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 from math import degrees
+from typing import Annotated, Literal
 
 import numpy as np
 import pandas as pd
 
 from alightsize_sim.articulated_statics import MEMBERS
 
-from alightsize.common.config import Node
 from alightsize.common.errors import InputError
+from alightsize.common.typed import Number, Table
 from alightsize.loads.envelopes import MEMBER_LABELS, Extreme, MemberEnvelope, combine, envelope, member_fields
 from alightsize.loads.config import LoadsConfig, read_loads
 from alightsize.loads.telescoping import free_body
 
 TELESCOPING = "telescoping"
 TELESCOPING_FORCES = ("AF1", "P1", "P2", "P3", "P4")
-SENSES = ("tension", "compression", "magnitude")
+Sense = Literal["tension", "compression", "magnitude"]
 
 
 @dataclass(frozen=True)
@@ -122,80 +124,68 @@ def pick(res: LoadsResult, env: str, member: str, sense: str) -> Extreme | None:
     return max(present, key=lambda e: abs(e.value)) if present else None
 
 
-def _reference(node: Node, name: str, ref: dict, envelopes: tuple[str, ...],
-               telescoping: bool) -> tuple[Node, str, str, str, float]:
-    """A force reference {envelope, member, sense, factor, optional} read and checked against the envelope
-    names (optional = true: a member not loaded in that sense drops the check, see `Unloaded`)."""
-    sub = Node(node.file, node.key(name), ref, node.context)
-    sub.allow(("envelope", "member", "sense", "factor", "optional"))
-    sub.boolean("optional", False)
-    env = sub.string("envelope")
-    member = sub.string("member")
-    sense = sub.string("sense", "magnitude", choices=SENSES)
-    factor = sub.number("factor", 1.0)
-    sub.finish()
-    if env == TELESCOPING:
-        if not telescoping:
-            raise sub.error("envelope", "a loads file with a [telescoping] table", "none")
-        if member not in TELESCOPING_FORCES:
-            raise sub.error("member", "one of " + ", ".join(TELESCOPING_FORCES), repr(member))
-    else:
-        if env not in envelopes:
-            raise sub.error("envelope", "one of " + ", ".join(repr(k) for k in [*envelopes, TELESCOPING]), repr(env))
-        if member not in MEMBERS:
-            raise sub.error("member", "one of " + ", ".join(MEMBERS), repr(member))
-    return sub, env, member, sense, factor
+class Reference(Table):
+    """A force written as an envelope reference, as read (its names are checked by `check_references`);
+    optional = true: a member never loaded in that sense drops the check (`Unloaded`)."""
+
+    envelope: str
+    member: str
+    sense: Sense = "magnitude"
+    factor: Annotated[float, Number()] = 1.0
+    optional: bool = False
 
 
 class ForceRef(float):
-    """A force key written as an envelope reference, read and checked against the envelope names: it stands for
-    1 N until `resolve` gives it its envelope's value (reading computes nothing)."""
+    """A force key written as an envelope reference: it stands for 1 N until `resolve` gives it its envelope's
+    value (reading computes nothing)."""
 
     key: str                          # the force key as written, `item["Upper Truss"].check[0].load`
-    ref_key: str                      # the reference table's own path (errors on its keys)
-    envelope: str
-    member: str
-    sense: str
-    factor: float
-    optional: bool
+    ref: Reference
 
-    def __new__(cls, key: str, ref_key: str, envelope: str, member: str, sense: str, factor: float,
-                optional: bool) -> "ForceRef":
-        ref = super().__new__(cls, 1.0)
-        ref.key, ref.ref_key, ref.envelope, ref.member, ref.sense = key, ref_key, envelope, member, sense
-        ref.factor, ref.optional = factor, optional
-        return ref
+    def __new__(cls, key: str, ref: Reference) -> "ForceRef":
+        out = super().__new__(cls, 1.0)
+        out.key, out.ref = key, ref
+        return out
 
 
 def resolve(res: LoadsResult, ref: ForceRef, file: str) -> LoadReference:
     """The envelope value `ref` stands for (magnitude times factor); `Unloaded` when an optional reference's member
     is never loaded in its sense."""
-    if ref.envelope == TELESCOPING:
-        assert res.telescoping is not None          # `validate_references` refuses it without a [telescoping] table
-        value, extreme = abs(res.telescoping[ref.member]) * ref.factor, (res.telescoping_from or {}).get(ref.member)
+    r = ref.ref
+    if r.envelope == TELESCOPING:
+        assert res.telescoping is not None          # `check_references` refuses it without a [telescoping] table
+        value, extreme = abs(res.telescoping[r.member]) * r.factor, (res.telescoping_from or {}).get(r.member)
     else:
-        extreme = pick(res, ref.envelope, ref.member, ref.sense)
-        if extreme is None and ref.optional:
+        extreme = pick(res, r.envelope, r.member, r.sense)
+        if extreme is None and r.optional:
             raise Unloaded(ref.key)
         if extreme is None:
-            raise InputError(file, f"{ref.ref_key}.sense", f"a sense in which {ref.member} is loaded in envelope "
-                             f"{ref.envelope!r}", repr(ref.sense))
-        value = abs(extreme.value) * ref.factor
-    return LoadReference(ref.key, ref.envelope, ref.member, ref.sense, ref.factor, value, extreme)
+            raise InputError(file, f"{ref.key}.sense", f"a sense in which {r.member} is loaded in envelope "
+                             f"{r.envelope!r}", repr(r.sense))
+        value = abs(extreme.value) * r.factor
+    return LoadReference(ref.key, r.envelope, r.member, r.sense, r.factor, value, extreme)
 
 
-def validate_references(node: Node, cfg: LoadsConfig | None) -> None:
-    """Let force references under `node` be read as `ForceRef`s, checked against `cfg`'s envelope names before
-    any envelope is computed; without a loads config a reference is an input error."""
-    def check(n: Node, name: str, ref: dict) -> float:
+def check_references(refs: Iterable[ForceRef], cfg: LoadsConfig | None, file: str) -> None:
+    """The envelope references of a design as read, checked against `cfg`'s envelope and member names before any
+    envelope is computed; without a loads config a reference is an input error."""
+    envelopes = () if cfg is None else tuple(c.name for c in cfg.cases) + tuple(c[0] for c in cfg.combined)
+    for ref in refs:
         if cfg is None:
-            raise n.error(name, "a force with units, or an envelope reference with [loads] file = ... in the "
-                          "design config", "an envelope reference but no [loads] file")
-        sub, env, member, sense, factor = _reference(
-            n, name, ref, tuple(c.name for c in cfg.cases) + tuple(c[0] for c in cfg.combined),
-            cfg.telescoping is not None)
-        return ForceRef(n.key(name), sub.path, env, member, sense, factor, ref.get("optional", False))
-    node.context["force_reference"] = check
+            raise InputError(file, ref.key, "a force with units, or an envelope reference with [loads] file = ... "
+                             "in the design config", "an envelope reference but no [loads] file")
+        env, member = ref.ref.envelope, ref.ref.member
+        if env == TELESCOPING:
+            if cfg.telescoping is None:
+                raise InputError(file, f"{ref.key}.envelope", "a loads file with a [telescoping] table", "none")
+            if member not in TELESCOPING_FORCES:
+                raise InputError(file, f"{ref.key}.member", "one of " + ", ".join(TELESCOPING_FORCES), repr(member))
+        else:
+            if env not in envelopes:
+                raise InputError(file, f"{ref.key}.envelope",
+                                 "one of " + ", ".join(repr(k) for k in [*envelopes, TELESCOPING]), repr(env))
+            if member not in MEMBERS:
+                raise InputError(file, f"{ref.key}.member", "one of " + ", ".join(MEMBERS), repr(member))
 
 
 def load_from(path) -> LoadsResult:

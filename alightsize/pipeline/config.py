@@ -12,9 +12,9 @@ from alightsize.common.errors import InputError
 from alightsize.common.typed import Integer, Quantity, Table, validate
 from alightsize.checks.rules import DEFAULT_RULES, RULES, RuleSet
 from alightsize.loads.config import LoadsConfig, read_loads
-from alightsize.loads.quasi_static import LoadReference, LoadsResult, run_loads, validate_references
+from alightsize.loads.quasi_static import LoadReference, LoadsResult, check_references, run_loads
 from alightsize.model.materials import Material, library, material_paths
-from alightsize.pipeline.items import Item, RequiredFactor, read_item, with_loads
+from alightsize.pipeline.items import Item, RequiredFactor, read_item, references, with_loads
 from alightsize.pipeline.landings import Landings, LandingSpec, LandingsTable, landed, landing_spec, run_landings
 
 UnitSystem = Literal["US", "SI"]
@@ -67,8 +67,7 @@ class DesignConfig:
 
 def read_items(nodes: tuple[Node, ...], mats: dict[str, Material], required: float, root: Node,
                rules: str) -> tuple[Item, ...]:
-    """Read item tables (their envelope references checked against `root`'s loads config: validate_references);
-    names unique."""
+    """Read item tables (their envelope references as read: `check_references` checks them); names unique."""
     items = tuple(read_item(n, mats, required, RULES[rules]) for n in nodes)
     names = [i.name for i in items]
     dup = next((n for n in names if names.count(n) > 1), None)
@@ -124,12 +123,12 @@ def read_design(path: str | Path, root: Node | None = None) -> DesignSpec:
         if not is_file(file):
             raise InputError(str(path), "loads.file", "the path of an existing loads config", str(file))
         loads = read_loads(file)
-    validate_references(root, loads)
     landings = landing_spec(f.landings, path, loads) if f.landings is not None else None
     for t in ("design", "report", "audit", "loads", "landings"):
         root.raw(t, None)                          # read above
     items = read_items(tuple(root.tables("item", label="name")), mats, required, root, d.rules)
     root.finish()
+    check_references(references(items), loads, str(path))
     return DesignSpec(path, d.configuration, d.title if d.title is not None else d.configuration, d.capsule_mass,
                       d.legs, f.report.units, required, aud.decimals, mats, items, loads, landings, rules=d.rules)
 

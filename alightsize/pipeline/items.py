@@ -174,6 +174,12 @@ def read_item(node: Node, materials: dict[str, Material], required_default: floa
     return item
 
 
+def references(items: tuple[Item, ...]) -> list[ForceRef]:
+    """The envelope references of the items' checks as read, in order."""
+    return [v for item in items for check in item.checks for p in check.params.values()
+            for v in (p if isinstance(p, tuple) else (p,)) if isinstance(v, ForceRef)]
+
+
 def _resolved(value, res: LoadsResult, file: str, refs: list[LoadReference]):
     """A check parameter with its envelope references (`ForceRef`, read as 1 N) given their values."""
     if isinstance(value, ForceRef):
@@ -187,7 +193,7 @@ def _resolved(value, res: LoadsResult, file: str, refs: list[LoadReference]):
 def with_loads(item: Item, res: LoadsResult | None, file: str) -> tuple[Item, list[LoadReference]]:
     """The item with its checks' envelope references resolved from `res`, and the references; a check of a member
     never loaded in an optional reference's sense is dropped (`Unloaded`). Validated again at the loads found."""
-    if res is None:                     # without loads no reference was read (validate_references refuses it)
+    if res is None:                     # without loads there is no reference (check_references refuses it)
         return item, []
     checks, refs = [], []
     for check in item.checks:

@@ -44,7 +44,7 @@ from alightsize.landings.study import Run, Study, _sampled
 from alightsize.loads.config import Combined, Configuration, GridTable, LoadsConfig, Name, check_combined
 from alightsize.loads.envelopes import LegCase, default_grid
 from alightsize.loads.interface import landing_loads
-from alightsize.loads.quasi_static import TELESCOPING, LoadReference, validate_references
+from alightsize.loads.quasi_static import TELESCOPING, LoadReference, check_references
 from alightsize.loads.telescoping import TelescopingLeg
 from alightsize.model.envelope import Envelope
 from alightsize.model.materials import library, material_paths
@@ -57,7 +57,7 @@ from alightsize.pipeline.cores import core_prism, crush_stroke
 from alightsize.pipeline.config import DesignSpec, UnitSystem, read_design, read_items
 from alightsize.pipeline.landings import LandingSpec
 from alightsize.checks.rules import DEFAULT_RULES, RuleSet
-from alightsize.pipeline.items import Item, RequiredFactor
+from alightsize.pipeline.items import Item, RequiredFactor, references
 from alightsize.pipeline.members import member_item
 from alightsize.pipeline.outrigger import (OUTRIGGER, Outrigger, articulated_outrigger, outrigger_item,
                                            outrigger_span, telescoping_outrigger)
@@ -456,9 +456,9 @@ def read_lander(path: str | Path, overrides: dict | None = None, root: Node | No
     nodes += [_crushable(n, root, scene_file, mats) for n in root.tables("item", optional=True, label="name")]
     if not nodes:
         raise root.error("members", "at least one [members.NAME] table or [[item]]", "neither")
-    validate_references(root, loads)
     items = read_items(tuple(nodes), mats, req.required, root, rules)
     root.finish()
+    check_references(references(items), loads, str(path))
     if req.terrain.soil is not None:
         find_soil(req.terrain.soil, path.parent, str(path), "requirements.terrain.soil")
         if not (scene_file.legs.footpad_mass > 0 and scene_file.legs.footpad_diameter > 0):

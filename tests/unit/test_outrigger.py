@@ -115,6 +115,16 @@ def test_a_moment_of_several_force_arm_terms_adds_their_magnitudes():
         _combined(["2 kN", "3 kN"], ["1 m"])
 
 
+def test_an_envelope_reference_in_a_force_array_is_named_by_its_element():
+    """A reference table among moment_force's terms is read as written (no envelope looked up) and a bad key in it
+    is named with the element's index."""
+    with pytest.raises(InputError) as err:
+        _combined(["2 kN", {"envelope": 34, "member": "PU1"}], ["1 m", "0.5 m"])
+    assert (err.value.key, err.value.expected) == ('item[0].check["combined"].moment_force[1].envelope', "a string")
+    force = _combined(["2 kN", {"envelope": "any", "member": "PU1"}], ["1 m", "0.5 m"]).checks[0].params["Mf"][1]
+    assert force.key == 'item[0].check["combined"].moment_force[1]' and force.ref.envelope == "any"
+
+
 # ------------------------------------------------------------------ articulated legs
 
 def _articulated(structure: dict | None = None, members: dict | None = None):
