@@ -38,14 +38,19 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from math import hypot, sin
+from typing import Annotated, Any
+
+from pydantic import BaseModel, ConfigDict, model_validator
 
 from alightsize_sim.articulated_kinematics import ArticulatedGeometry
 
-from alightsize.checks.rules import RULES
+from alightsize.checks.rules import RULES, RuleSet
 from alightsize.common.config import Node
 from alightsize.common.errors import InputError
+from alightsize.common.typed import Quantity, Table, refuse, validate
 from alightsize.loads.quasi_static import TELESCOPING
 from alightsize.loads.telescoping import TelescopingLeg
+from alightsize.pipeline.items import Size
 from alightsize.pipeline.members import ITEM_KEYS, _ref
 
 OUTRIGGER = "outrigger"
@@ -99,22 +104,51 @@ def articulated_outrigger(node: Node, g: ArticulatedGeometry, radius: float, bod
     return Outrigger(outer - body_radius, f, ((f, radius - body_radius + articulated_reach(g)),))
 
 
+class _Tube(BaseModel):
+    """The outrigger's view of its section, a tube by its outside diameter (the item's reader reads every key)."""
+
+    model_config = ConfigDict(extra="ignore", strict=True, frozen=True)
+
+    shape: Any = None
+    outside_diameter: Annotated[float, Quantity("length")]
+
+    @model_validator(mode="after")
+    def _tube(self):
+        if self.shape != "tube":
+            raise refuse("\"tube\" (the outrigger is a tube cantilevered from the body)", repr(self.shape), "shape")
+        return self
+
+
+class OutriggerMember(Table):
+    """`[members.outrigger]`: its rules, its section and size typed; the item's keys (ITEM_KEYS but length and
+    count, which the outrigger gives) passed on as written to the item's reader."""
+
+    rules: RuleSet | None = None
+    material: Any = None
+    section: _Tube
+    weight: Any = None
+    size: Size | None = None
+    note: Any = None
+    required_design_factor: Any = None
+    allow_below_one: Any = None
+
+    def largest_diameter(self) -> float:
+        """The tube's outside diameter, m: the section's, or the largest its sizing reaches."""
+        s = self.size
+        if s is None or s.dimension != "outside_diameter":
+            return self.section.outside_diameter
+        return max(self.section.outside_diameter, *s.gauges, *(() if s.max is None else (s.max,)))
+
+
 def outrigger_item(node: Node, rig: Outrigger | None, default_rules: str) -> dict:
     """`[members.outrigger]` as an item with its derived checks, length and tube weight; refused when the lander
     has no outrigger (no `[structure] body_radius`, or the attachments on the body)."""
     if rig is None:
         raise InputError(node.file, node.path, "an outrigger only on legs attached outside the body (a [structure] "
                          "body_radius below the legs' attachment radius)", "no such attachment")
-    node.allow((*(k for k in ITEM_KEYS if k not in ("length", "count")), "rules"))
-    rules = RULES[node.string("rules", default_rules, choices=tuple(RULES))]
-    section = node.table("section")
-    if section.data.get("shape") != "tube":
-        raise section.error("shape", "\"tube\" (the outrigger is a tube cantilevered from the body)",
-                            repr(section.data.get("shape")))
-    size = node.data.get("size")
-    sized = isinstance(size, dict) and size.get("dimension") == "outside_diameter" and "max" in size
-    od = max([section.quantity("outside_diameter", "length")]
-             + ([node.table("size").quantity("max", "length")] if sized else []))
+    m = validate(OutriggerMember, node.data, node.file, node.path)
+    rules = RULES[m.rules or default_rules]
+    od = m.largest_diameter()
     if rig.span < od:
         raise node.error("section", f"an outside diameter up to the outrigger's length {rig.span:.4g} m (attachment "
                          "radius - body radius): a shorter stub is a shear lug, not the beam this check is",

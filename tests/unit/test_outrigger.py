@@ -96,6 +96,15 @@ def test_a_stub_shorter_than_its_diameter_is_refused():
         _lunar(lambda d: d["structure"].update(body_radius="2.3 m"))
 
 
+def test_a_stub_shorter_than_its_largest_gauge_is_refused():
+    """Sized over gauges, the tube reaches its largest one: a 2 m gauge on L = 1.4 m is refused as a 2 m size max
+    is (the smaller section alone would pass)."""
+    gauges = {"dimension": "outside_diameter", "gauges": ["100 mm", "2 m"]}
+    with pytest.raises(InputError, match="outrigger's length") as err:
+        _lunar(lambda d: d["members"]["outrigger"].update(size=gauges))
+    assert (err.value.key, err.value.found) == ("members.outrigger.section", "2 m")
+
+
 def _combined(moment_force, moment_arm):
     from alightsize.checks.rules import RULES
     from alightsize.common.config import Node
