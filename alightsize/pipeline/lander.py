@@ -22,7 +22,7 @@ from dataclasses import dataclass
 from functools import partial
 from math import degrees, radians
 from pathlib import Path
-from typing import Annotated, Any
+from typing import Annotated, Any, Literal
 
 import numpy as np
 from pydantic import ValidationInfo, model_validator
@@ -383,23 +383,39 @@ def cell_curve(root: Node, cell: str) -> tuple[tuple[float, ...], tuple[float, .
     return c.deflection, c.force
 
 
-def _crushable(node: Node, root: Node, scene: SceneFile, mats: dict) -> Node:
-    """An item weighed as a cell's crushable core, `weight = {method = "crushable", cell = NAME}`, as the prism
-    it is: area = crushing force / crush strength, length = stroke / usable stroke fraction (App. V)."""
+class CrushableWeight(Table):
+    """`[[item]] weight = {method = "crushable", cell = NAME}`: the item weighed as the crushable core of the cell
+    `[cells.NAME]` (the prism `core_prism` gives); its other keys are the prism's."""
+
+    method: Literal["crushable"]
+    cell: str
+    allowance: Annotated[float, Number("any")] = 0.0
+    extra: Annotated[float, Quantity("mass")] = 0.0
+    label: str = ""
+    note: str = ""
+
+    @model_validator(mode="after")
+    def _cell(self, info: ValidationInfo):
+        assert info.context is not None             # `_crushable` passes the file's cells
+        if self.cell not in info.context["cells"]:
+            raise refuse("the name of a [cells.NAME] table", repr(self.cell), "cell")
+        return self
+
+
+def _crushable(node: Node, scene: SceneFile, mats: dict) -> Node:
+    """An item weighed as a cell's crushable core (`CrushableWeight`) as the prism it is: area = crushing force /
+    crush strength, length = stroke / usable stroke fraction (App. V); any other item as it is."""
     w = node.data.get("weight")
     if not (isinstance(w, dict) and w.get("method") == "crushable"):
         return node
-    wn = Node(node.file, f"{node.path}.weight", dict(w), root.context)
-    wn.allow(("method", "cell", "allowance", "extra", "label", "note"))
-    cell = wn.string("cell")
-    if cell not in scene.cells:
-        raise wn.error("cell", "the name of a [cells.NAME] table", repr(cell))
+    core = validate(CrushableWeight, w, node.file, f"{node.path}.weight", cells=scene.cells)
     mat = mats.get(str(node.data.get("material")))
     if mat is None or mat.crush_strength is None or mat.stroke_fraction is None:
         raise node.error("material", "a crushable material (with crush_strength and stroke_fraction)",
                          repr(node.data.get("material")))
-    prism = core_prism(w, scene.cells[cell].deflection, scene.cells[cell].force, mat, cell)
-    return Node(node.file, node.path, {**node.data, "weight": prism}, root.context)
+    cell = scene.cells[core.cell]
+    prism = core_prism(w, cell.deflection, cell.force, mat, core.cell)
+    return Node(node.file, node.path, {**node.data, "weight": prism})
 
 
 def _tripod_landing_items(leg: TripodLeg, members: Node, rules: str, mats: dict, required: float,
@@ -453,7 +469,7 @@ def read_lander(path: str | Path, overrides: dict | None = None, root: Node | No
             nodes.append(Node(root.file, m.path, data, root.context))
         members.finish()
     n_members = len(nodes)
-    nodes += [_crushable(n, root, scene_file, mats) for n in root.tables("item", optional=True, label="name")]
+    nodes += [_crushable(n, scene_file, mats) for n in root.tables("item", optional=True, label="name")]
     if not nodes:
         raise root.error("members", "at least one [members.NAME] table or [[item]]", "neither")
     items = read_items(tuple(nodes), mats, req.required, root, rules)
