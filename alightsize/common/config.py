@@ -1,4 +1,4 @@
-"""Reading TOML configs: typed access by key path, quantities parsed to SI, unknown keys rejected."""
+"""Reading TOML configs: tables by key path, unknown keys rejected (values are typed in alightsize.common.typed)."""
 
 from __future__ import annotations
 
@@ -9,7 +9,6 @@ import tomllib
 from pathlib import Path
 from typing import Any, Literal, overload
 
-from alightsize.common import units
 from alightsize.common.errors import InputError, warn_input
 
 _MISSING = object()
@@ -40,9 +39,8 @@ def _describe(value: Any) -> str:
 class Node:
     """A TOML table being read: every key read is recorded so `finish` can reject unknown keys."""
 
-    def __init__(self, file: str | Path, path: str, data: dict, context: dict | None = None):
+    def __init__(self, file: str | Path, path: str, data: dict):
         self.file, self.path, self.data = str(file), path, data
-        self.context = {} if context is None else context     # shared by the whole tree (hooks, records)
         self._read: set[str] = set()
 
     def key(self, name: str) -> str:
@@ -95,45 +93,6 @@ class Node:
             return default
         return self.data[name]
 
-    def quantity(self, name: str, dim: str, default: Any = _MISSING, positive: bool = True) -> float:
-        """A quantity with units, returned in SI (angles in radians)."""
-        value = self.raw(name, default)
-        if value is default and default is not _MISSING:
-            return default
-        return self.parse_quantity(name, value, dim, positive)
-
-    def parse_quantity(self, name: str, value: Any, dim: str, positive: bool = True) -> float:
-        if isinstance(value, dict) and dim == "force" and "force_reference" in self.context:
-            return self.context["force_reference"](self, name, value)
-        try:
-            si = units.parse(value, dim)
-        except ValueError as exc:
-            raise self.error(name, str(exc), _describe(value)) from None
-        if positive and si <= 0:
-            raise self.error(name, f"a positive {dim}", _describe(value))
-        return si
-
-    def number(self, name: str, default: Any = _MISSING, positive: bool = True) -> float:
-        value = self.raw(name, default)
-        if value is default and default is not _MISSING:
-            return default
-        if isinstance(value, bool) or not isinstance(value, (int, float)):
-            raise self.error(name, "a number", _describe(value))
-        low, high, _ = units.RANGES["dimensionless"]
-        if not (value == 0 or low <= abs(value) <= high) or (positive and value <= 0):   # NaN fails too
-            raise self.error(name, ("a positive number" if positive else "a number")
-                             + f" of magnitude {low:g} to {high:g}" + ("" if positive else " (or 0)"), _describe(value))
-        return float(value)
-
-    def integer(self, name: str, default: Any = _MISSING, minimum: int = 1, maximum: int = 1_000_000) -> int:
-        """An integer from `minimum` to `maximum` (every count an input gives has a finite range)."""
-        value = self.raw(name, default)
-        if value is default and default is not _MISSING:
-            return default
-        if isinstance(value, bool) or not isinstance(value, int) or not minimum <= value <= maximum:
-            raise self.error(name, f"an integer from {minimum:,} to {maximum:,}", _describe(value))
-        return value
-
     def string(self, name: str, default: Any = _MISSING, choices: tuple[str, ...] | None = None) -> str:
         value = self.raw(name, default)
         if value is default and default is not _MISSING:
@@ -142,12 +101,6 @@ class Node:
             raise self.error(name, "a string", _describe(value))
         if choices is not None and value not in choices:
             raise self.error(name, "one of " + ", ".join(repr(c) for c in choices), repr(value))
-        return value
-
-    def boolean(self, name: str, default: Any = _MISSING) -> bool:
-        value = self.raw(name, default)
-        if not isinstance(value, bool):
-            raise self.error(name, "true or false", _describe(value))
         return value
 
     @overload
@@ -163,7 +116,7 @@ class Node:
             return None
         if not isinstance(value, dict):
             raise self.error(name, "a table", _describe(value))
-        return Node(self.file, self.key(name), value, self.context)
+        return Node(self.file, self.key(name), value)
 
     def tables(self, name: str, optional: bool = False, label: str | None = None) -> list[Node]:
         """An array of tables. With `label`, an element whose string under that key is unique in the array is
@@ -176,13 +129,7 @@ class Node:
         def element(i: int) -> str:
             text = labels[i] if labels else None
             return json.dumps(text, ensure_ascii=False) if isinstance(text, str) and labels.count(text) == 1 else str(i)
-        return [Node(self.file, f"{self.key(name)}[{element(i)}]", v, self.context) for i, v in enumerate(value)]
-
-    def strings(self, name: str, default: Any = _MISSING) -> list[str]:
-        value = self.raw(name, default)
-        if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
-            raise self.error(name, "an array of strings", _describe(value))
-        return list(value)
+        return [Node(self.file, f"{self.key(name)}[{element(i)}]", v) for i, v in enumerate(value)]
 
     def allow(self, names) -> None:
         """Reject keys outside `names` before reading, so a typo is reported rather than a missing key."""

@@ -458,7 +458,7 @@ def read_lander(path: str | Path, overrides: dict | None = None, root: Node | No
     tripod: tuple[TripodLeg, Node] | None = None
     leg = scene.scene.legs[0]
     if isinstance(leg, TripodLeg) and members:     # a tripod lander's legs are alike but for their azimuth
-        tripod = (leg, Node(members.file, members.path, copy.deepcopy(members.data), members.context))
+        tripod = (leg, Node(members.file, members.path, copy.deepcopy(members.data)))
         nodes += tripod_items(leg, TripodLoads.stand_in(), members, rules, mats)
     elif members:
         assert loads is not None                    # telescoping and articulated legs have their App. III config
@@ -466,7 +466,7 @@ def read_lander(path: str | Path, overrides: dict | None = None, root: Node | No
             m = members.table(key)
             data = (outrigger_item(m, rig, rules) if key == OUTRIGGER
                     else member_item(m, key, loads.telescoping, envelopes[-1], rules))
-            nodes.append(Node(root.file, m.path, data, root.context))
+            nodes.append(Node(root.file, m.path, data))
         members.finish()
     n_members = len(nodes)
     nodes += [_crushable(n, scene_file, mats) for n in root.tables("item", optional=True, label="name")]

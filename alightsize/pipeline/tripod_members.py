@@ -281,7 +281,7 @@ def landing_tripod_items(leg: TripodLeg, members: Node, rules: str, materials: d
                          rows: tuple[dict, ...]) -> list[Node]:
     """The item tables of a tripod lander's `[members.NAME]` tables (`members`, as read: a copy is consumed) under
     the load extremes of the stored landing `rows` (`TripodLoads.from_landings`)."""
-    fresh = Node(members.file, members.path, copy.deepcopy(members.data), members.context)
+    fresh = Node(members.file, members.path, copy.deepcopy(members.data))
     return tripod_items(leg, TripodLoads.from_landings(rows), fresh, rules, materials)
 
 
@@ -292,7 +292,7 @@ def tripod_items(leg: TripodLeg, loads: TripodLoads, members: Node, rules: str,
     out = []
     for key in members.data:
         m = members.table(key)
-        out += [Node(m.file, m.path, data, m.context)
+        out += [Node(m.file, m.path, data)
                 for data in tripod_member_items(m, key, leg, loads, rules, materials)]
     members.finish()
     return out
