@@ -154,6 +154,7 @@ class Lander:
     scene: SceneConfig
     requirements: Requirements
     document: SceneDocument
+    cells: dict[str, Cell]            # the [cells.NAME] tables as read (a curve as written, before any factor)
 
     @property
     def study(self) -> Study:
@@ -377,12 +378,6 @@ def _outrigger(path: Path, name: str, structure: dict, scene: SceneFile, loads: 
                                  own.radius, s.body_radius, envelope)
 
 
-def cell_curve(root: Node, cell: str) -> tuple[tuple[float, ...], tuple[float, ...]]:
-    """(deflections m, forces N) of the `[cells.NAME]` table of a lander file as written (no `factor`)."""
-    c = validate(Cell, root.table("cells").table(cell).data, root.file, f"cells.{cell}")
-    return c.deflection, c.force
-
-
 class CrushableWeight(Table):
     """`[[item]] weight = {method = "crushable", cell = NAME}`: the item weighed as the crushable core of the cell
     `[cells.NAME]` (the prism `core_prism` gives); its other keys are the prism's."""
@@ -495,7 +490,7 @@ def read_lander(path: str | Path, overrides: dict | None = None, root: Node | No
     pad = m if tripod and FOOTPAD in tripod[1].data and m > 0 else None
     spec = DesignSpec(path, name, title, scene.scene.mass, len(scene.scene.legs), units, req.required, req.decimals,
                       mats, items, loads, landings, req.weight_goal, rules, derived, pad)
-    return Lander(spec, scene, req, document)
+    return Lander(spec, scene, req, document, scene_file.cells)
 
 
 def read_input(path: str | Path) -> DesignSpec:

@@ -101,7 +101,7 @@ class Evaluator:
         self.computed = self.stored = 0                            # landings run / found stored
 
     def overrides(self, x) -> dict:
-        return {**self.context, **overrides(self.free, x, self.root)}
+        return {**self.context, **overrides(self.free, x)}
 
     def key(self, x) -> str:
         text = json.dumps({"overrides": self.overrides(x), "file": self.file_hash, "version": __version__},

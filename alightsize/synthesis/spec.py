@@ -26,6 +26,7 @@ factor), so their sections are free without being listed.
 
 from __future__ import annotations
 
+import copy
 from dataclasses import dataclass, field
 from math import isfinite
 from pathlib import Path
@@ -37,7 +38,8 @@ from alightsize.common.config import SEED_MAX, Node, load_toml
 from alightsize.common.errors import InputError
 from alightsize.common.typed import Integer, Number, Quantities, Table, refuse, validate
 from alightsize.common.units import DIMS, RANGES, dimension_of, registry
-from alightsize.pipeline.lander import cell_curve, crush_stroke
+from alightsize.model.scene_config import Cell
+from alightsize.pipeline.lander import crush_stroke, read_lander
 
 CELL_KEYS = ("crush_force", "stroke")          # "cells.NAME.crush_force" / "cells.NAME.stroke"
 TRADE_AXES = {"horizontal_speed": "velocity", "slope": "angle"}
@@ -53,6 +55,7 @@ class FreeParameter:
     start: float
     unit: str
     per_si: float                 # display units per SI unit
+    curve: tuple[tuple[float, ...], tuple[float, ...]] | None = None    # a cell's (deflections m, forces N) as read
 
     @property
     def cell(self) -> tuple[str, str] | None:
@@ -174,19 +177,22 @@ def _lookup(data: dict, key: str):
     return data
 
 
-def free_parameters(bounds: dict[str, tuple[float, float, str, float]], root: Node) -> tuple[FreeParameter, ...]:
+def free_parameters(bounds: dict[str, tuple[float, float, str, float]], root: Node,
+                    cells: dict[str, Cell]) -> tuple[FreeParameter, ...]:
     """The free parameters, each starting at the lander file's own value: a cell's crushing force or stroke from
-    its curve, any other scene key as written; a key the file does not set, or bounds that do not hold its value,
-    are bad input."""
+    its curve (`cells`, the file's as read), any other scene key as written; a key the file does not set, or
+    bounds that do not hold its value, are bad input."""
     out = []
     for key, (lo, hi, unit, per_si) in bounds.items():
         where = f"synthesis.free.{key}"
         parts = key.split(".")
+        curve = None
         if parts[0] == "cells":
-            if len(parts) != 3 or parts[2] not in CELL_KEYS or parts[1] not in (root.data.get("cells") or {}):
+            if len(parts) != 3 or parts[2] not in CELL_KEYS or parts[1] not in cells:
                 raise InputError(root.file, where, "cells.NAME.crush_force or cells.NAME.stroke of a [cells.NAME] "
                                  "table", repr(key))
-            force, stroke = crush_stroke(*cell_curve(root, parts[1]))
+            curve = cells[parts[1]].deflection, cells[parts[1]].force
+            force, stroke = crush_stroke(*curve)
             start = force if parts[2] == "crush_force" else stroke
         else:
             if parts[0] not in ("capsule", "legs", "terrain", "initial", "controls"):
@@ -200,7 +206,7 @@ def free_parameters(bounds: dict[str, tuple[float, float, str, float]], root: No
                 start, _, _ = _quantity(value)
             except ValueError as exc:
                 raise InputError(root.file, where, str(exc), repr(value)) from None
-        p = FreeParameter(key, lo, hi, start, unit, per_si)
+        p = FreeParameter(key, lo, hi, start, unit, per_si, curve)
         if not p.low <= p.start <= p.high:
             raise InputError(root.file, where, f"bounds that hold the file's own value {p.show(p.start)} (the "
                              "starting design)", f"[{p.show(p.low)}, {p.show(p.high)}]")
@@ -209,7 +215,8 @@ def free_parameters(bounds: dict[str, tuple[float, float, str, float]], root: No
 
 
 def read_synthesis(path: str | Path) -> SynthesisSpec:
-    """The `[synthesis]` table of a lander file (InputError when it has none or it is malformed)."""
+    """The `[synthesis]` table of a lander file, the file read once and validated whole (`read_lander`: the
+    starting design); InputError when it has none or either is malformed."""
     path = Path(path)
     root = load_toml(path)
     if "synthesis" not in root.data:
@@ -222,7 +229,8 @@ def read_synthesis(path: str | Path) -> SynthesisSpec:
                           budget.population if t.population is None else t.population,
                           budget.samples if t.samples is None else t.samples)
     check_seed = s.seed + 1 if s.check_seed is None else s.check_seed
-    return SynthesisSpec(path, free_parameters(s.free, root), s.seed, budget, s.check_samples, check_seed, trade,
+    cells = read_lander(path, root=Node(path, "", copy.deepcopy(root.data))).cells
+    return SynthesisSpec(path, free_parameters(s.free, root, cells), s.seed, budget, s.check_samples, check_seed, trade,
                          trade_budget, s.stroke_margin, root.data)
 
 
@@ -255,17 +263,19 @@ def parse_start(spec: SynthesisSpec, items: list[str]) -> dict[str, float]:
     return out
 
 
-def overrides(free: tuple[FreeParameter, ...], x, root: Node) -> dict:
+def overrides(free: tuple[FreeParameter, ...], x) -> dict:
     """The lander-file overrides of a candidate `x` (SI, one value per free parameter): a cell's crushing
     force scales its force curve and its stroke its deflections; a scene key takes the value in its unit."""
-    out, scale = {}, {}
+    out, scale, curves = {}, {}, {}
     for p, v in zip(free, x):
         if p.cell is None:
             out[p.key] = p.toml(float(v))
         else:
+            assert p.curve is not None                  # `free_parameters` gives a cell's parameter its curve
             scale.setdefault(p.cell[0], {})[p.cell[1]] = float(v) / p.start
+            curves[p.cell[0]] = p.curve
     for cell, s in scale.items():
-        defl, force = cell_curve(root, cell)
+        defl, force = curves[cell]
         if "crush_force" in s:
             out[f"cells.{cell}.force"] = [f"{f * s['crush_force']!r} N" for f in force]
         if "stroke" in s:

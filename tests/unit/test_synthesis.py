@@ -15,7 +15,6 @@ import pytest
 from scipy.stats import norm
 
 from alightsize.cli import main
-from alightsize.common.config import load_toml
 from alightsize.common.errors import InputError
 from alightsize.landings.probability import wilson_interval
 from alightsize.model.materials import library
@@ -75,10 +74,9 @@ def test_free_cell_parameters_and_crushable_weight():
     """Setting a cell's crushing force and stroke scales its curve so that its plateau and bottoming stroke
     are those values (1e-12), and the crushable core then weighs rho F s / (sigma_c eta) (App. V prism)."""
     spec = read_synthesis(EXAMPLE)
-    root = load_toml(EXAMPLE)
-    stroke = FreeParameter("cells.axial.stroke", 0.2, 0.8, 0.45, "m", 1.0)
+    stroke = FreeParameter("cells.axial.stroke", 0.2, 0.8, 0.45, "m", 1.0, spec.free[0].curve)
     free = (spec.free[0], stroke)
-    over = overrides(free, [12e3, 0.6], root)
+    over = overrides(free, [12e3, 0.6])
     lander = read_lander(EXAMPLE, over)
     curve = lander.scene.scene.legs[0].axial.curve
     assert max(curve.force[:-1]) == pytest.approx(12e3, rel=1e-12)

@@ -8,7 +8,6 @@ from pathlib import Path
 
 import numpy as np
 
-from alightsize.common.config import load_toml
 from alightsize.pipeline.lander import read_lander
 from alightsize.synthesis.spec import overrides, read_synthesis
 from conftest import ROOT
@@ -51,7 +50,7 @@ def test_free_tripod_keys_move_the_lander(tmp_path):
     x = [p.start for p in spec.free]
     x[0], x[1], x[3] = 2.8, 1.1, -1.4                 # footpad radius, primary hardpoint radius, footpad height
     x[7] = 1e-7                                       # next to the zero bound: below the parsers' 1e-6 m, reads 0
-    leg = read_lander(path, overrides(spec.free, x, load_toml(path))).scene.scene.legs[0]
+    leg = read_lander(path, overrides(spec.free, x)).scene.scene.legs[0]
     # Closed form: the primary runs from the hardpoint (radius 1.1 m, 0.4 m above the CG) to the footpad (radius
     # 2.8 m, 1.4 m below it) in the leg's vertical plane; round-off only (1e-12 m).
     length = float(np.linalg.norm(leg.footpad - leg.primary_hardpoint))
