@@ -427,6 +427,24 @@ def _hole(mu, y, i, n, x, yy, top, terrain):
     return top
 
 
+def pad_release(mu, y, n, e):
+    """Add the energy e (J) the struts of a leg lifting off give up (tripod_leg.lift_shape) to the friction work:
+    it goes with the footpad's in-plane motion, which a lift-off drops (_stop). A no-op without footpad mass, whose
+    audit counts what the cells do not keep as the interface's."""
+    if isinstance(mu, PadModel):
+        y[NB + 4 * n] += e
+
+
+@overload(pad_release)
+def _pad_release(mu, y, n, e):
+    if not is_pad(mu):
+        return lambda mu, y, n, e: None
+
+    def add(mu, y, n, e):
+        y[NB + 4 * n] += e
+    return add
+
+
 @njit(cache=True)
 def _stop(mu, y, i, n):
     """Footpad i brought to rest in the plane, its kinetic energy there added to the friction work."""

@@ -23,13 +23,13 @@ from .borrow import borrowed
 from .bundle import bundler
 from .footpad_mass import BAND as PAD_BAND
 from .footpad_mass import (FACE, FLOOR, STARTED, ground_event, has_mass, pad_event, pad_ground, pad_rates,
-                           pad_settle, pad_switch)
+                           pad_release, pad_settle, pad_switch)
 from .footpad_slip import contact_force, slides_by_position, slip_events
 from .rigid_body import free_flight, quat_matrix, quat_rate
 from .stability import hanging_margin, quiescence_momenta, quiescence_update, stable_by_energy, tipping_margins
 from .legs import TELESCOPING, TRIPOD, at_set, folded, free_footpad, leg_force, lift_shape, member_strike, slack
 from .telescoping_leg import aim
-from .terrain import FACE_GAP, clearance
+from .terrain import FACE_GAP, bearing_normal, clearance
 from .vec3 import cross, mtv, mv
 
 # Dormand-Prince 5(4).
@@ -124,16 +124,17 @@ def new_scratch(n, C, ny):
 @njit(cache=True)
 def n_events(n, C):
     """Number of event functions for n legs of up to C cells (see _events)."""
-    return (3 + 2 * C) * n
+    return (3 + 3 * C) * n
 
 
 @njit(cache=True)
 def cell_events(cells, mem):
-    """Event memory of every cell (n, C, 2): whether its turn to unloading is watched (set while it loads, its
-    deflection a new maximum and rising) and the index of the next corner of its loading curve past its
-    maximum (the curve's length when none is left)."""
+    """Event memory of every cell (n, C, 3): whether its turn to unloading is watched (set while it loads, its
+    deflection a new maximum and rising), the index of the next corner of its loading curve past its
+    maximum (the curve's length when none is left) and whether it is beyond its permanent set (loaded: set at
+    touchdown, flipped where it crosses the set)."""
     n, C = mem.shape[0], mem.shape[1]
-    cev = np.zeros((n, C, 2), np.int64)
+    cev = np.zeros((n, C, 3), np.int64)
     for i in range(n):
         for j in range(C):
             cev[i, j, 1] = _next_corner(cells, i, j, mem[i, j, 0], 0)
@@ -152,15 +153,18 @@ def _next_corner(cells, i, j, x, k):
 @njit(cache=True)
 def cell_event(cells, cev, which, n):
     """A located cell event `which` (index into the event functions, >= 3n): a turn stops watching the cell; a
-    corner moves the cell on to the curve's next corner."""
+    corner moves the cell on to the curve's next corner; a crossing of its permanent set flips its side."""
     C = cev.shape[1]
     c = which - 3 * n
     if c < n * C:
         cev[c // C, c % C, 0] = 0
-    else:
+    elif c < 2 * n * C:
         c -= n * C
         i, j = c // C, c % C
         cev[i, j, 1] = _next_corner(cells, i, j, cells[0][i, j, cev[i, j, 1]], cev[i, j, 1])
+    else:
+        c -= 2 * n * C
+        cev[c // C, c % C, 2] = 1 - cev[c // C, c % C, 2]
 
 
 @_inner
@@ -219,7 +223,7 @@ def rhs(arrays, y, dy, work):
 
 @_inner
 def _events(S, y, W, g, band):
-    """Event functions g ((3 + 2C) n); an event is a crossing of zero from above. g[i]: leg i's free footpad height
+    """Event functions g ((3 + 3C) n); an event is a crossing of zero from above. g[i]: leg i's free footpad height
     (in the air) or main-cell compression beyond its set (legs.slack) less the reach deficit (on the ground, from
     the leg state at y). An unarmed leg on the ground lifts off only `band` past zero (ctl[C_BAND];
     0.0 for the raw values, a float so that numba compiles one version, not one per literal flag): its main cell
@@ -236,7 +240,10 @@ def _events(S, y, W, g, band):
     footpad's soil event (footpad_mass: R(s) + FLOOR - FE3 while the soil holds it, its sinking rate while it
     sinks), else 1. g[3n + C i + j]: the deflection rate of cell j of leg i while its turn is watched
     (cell_events); g[(3 + C) n + C i + j]: its next loading-curve corner less its deflection (on the ground;
-    else 1).
+    else 1); g[(3 + 2C) n + C i + j]: a tripod's cell's deflection less its permanent set while beyond it, the set
+    less its deflection while short of it (on the ground; else 1): where its force leaves or meets zero, a kink
+    located as a corner is (the secondaries pass from compression to tension through both their cells' sets; the
+    other kinds' main cell leaves or meets its set where its leg lifts off or touches down).
     Locating these keeps every step's forces smooth: the largest stroke, which sets the unloading branch and the
     bottoming margin, is then found to event_tol, not sampled at step points."""
     geo, cells, mu, mem, contact, shape, armed, cev = S.geo, S.cells, S.mu, S.mem, S.contact, S.shape, S.armed, S.cev
@@ -266,6 +273,11 @@ def _events(S, y, W, g, band):
             g[3 * n + c] = rt[i, j] if contact[i] and cev[i, j, 0] else 1.0
             k = cev[i, j, 1]
             g[(3 + C) * n + c] = cells[0][i, j, k] - dt[i, j] if contact[i] and k < cells[2][i, j] else 1.0
+            if contact[i] and geo[7][i] == TRIPOD and j <= geo[5][i]:
+                beyond = dt[i, j] - crush_cell.permanent_set(cells[3][i, j], mem[i, j, 0], mem[i, j, 1])
+                g[(3 + 2 * C) * n + c] = beyond if cev[i, j, 2] else -beyond
+            else:
+                g[(3 + 2 * C) * n + c] = 1.0
 
 
 @_inner
@@ -439,6 +451,8 @@ def _switch(S, y, which, W):
                                                                        (alpha, beta, psi), dt[which, 0], y[0:3], R)
         if geo[7][which] == TELESCOPING:
             _clear(S, y, which, R)
+        elif geo[7][which] == TRIPOD:
+            _relax(S, y, which, R, (alpha, beta, psi), W)
         last[which, 2 * C] = 0.0
     else:
         pad = free_footpad(geo, cells, which, mem[which], shape[which], y[0:3], R)
@@ -466,7 +480,105 @@ def _switch(S, y, which, W):
         pad_switch(mu, y, which, P, sliding, True, mv(R, Xt[which, 0], Xt[which, 1], Xt[which, 2]), geo[9])
         for j in range(C):
             last[which, j], last[which, C + j] = dt[which, j], 0.0
+            S.cev[which, j, 2] = dt[which, j] > crush_cell.permanent_set(cells[3][which, j], mem[which, j, 0],
+                                                                         mem[which, j, 1])
         last[which, 2 * C] = 1.0
+
+
+@_inner
+def _lifted(S, y, i, R, shape):
+    """Height above the ground under it of leg i's free footpad with the shape `shape` (set as leg i's); -inf where
+    no footpad has that shape (struts that cannot meet)."""
+    for c in range(3):
+        S.shape[i, c] = shape[c]
+    foot = free_footpad(S.geo, S.cells, i, S.mem[i], S.shape[i], y[0:3], R)
+    if not (np.isfinite(foot[0]) and np.isfinite(foot[1]) and np.isfinite(foot[2])):
+        return -np.inf
+    return foot[2] - pad_ground(S.mu, y, i, len(S.contact), S.geo[9], foot[0], foot[1])
+
+
+@_inner
+def _glide(S, y, i, R, W, P, t, u):
+    """(a, b): leg i's rate-free force on the capsule (terrain axes, W its leg state) with its footpad at P + a t + b
+    u, along the surface directions t and u (its shape: the strut lengths there)."""
+    Q = np.empty(3)
+    for c in range(3):
+        Q[c] = P[c] + t[c] + u[c]
+    zero = (0.0, 0.0, 0.0)
+    _, S.shape[i, 0], S.shape[i, 1], S.shape[i, 2] = _leg_force_call(
+        S.geo, S.cells, i, S.mem[i], S.shape[i], Q, (y[0:3], R, zero, zero), (W.dt[i], W.ft[i], W.rt[i], W.Xt[i]))
+    f0, f1, f2 = mv(R, W.Xt[i, 0], W.Xt[i, 1], W.Xt[i, 2])
+    return f0, f1, f2
+
+
+@_inner
+def _relax(S, y, i, R, loaded, W):
+    """A tripod leg lifting off with the strut lengths `loaded` takes the free shape that unloads it, as a massless
+    leg in the air carries no force: its struts unloaded (lift_shape) where that keeps its footpad from sinking
+    into the ground (where its touchdown could not be found); else the footpad glides along the surface to where
+    the struts push only normal to it (the least strut energy on it, found by Newton's method: the leg then
+    touches down again at once, pushing); else it keeps `loaded`. The cells' static work from their lift-off
+    deflections to those of that shape is added to theirs, and what they give up (the energy of the footpad's
+    in-plane motion, which the massless leg drops) to the friction work (footpad_mass.pad_release)."""
+    cells, mem = S.cells, S.mem
+    before = W.dt[i].copy()
+    free = (S.shape[i, 0], S.shape[i, 1], S.shape[i, 2])
+    floor = min(_lifted(S, y, i, R, loaded), 0.0) - 0.5 * GTOL       # round-off below it still finds the ground
+    if _lifted(S, y, i, R, free) < floor:
+        _lifted(S, y, i, R, loaded)
+        foot = free_footpad(S.geo, cells, i, mem[i], S.shape[i], y[0:3], R)
+        P = np.array((foot[0], foot[1], foot[2]))
+        n0, n1, n2 = bearing_normal(S.geo[9], P[0], P[1], P[2])
+        t0, t1, t2 = (1.0, 0.0, 0.0) if abs(n0) < 0.9 else (0.0, 1.0, 0.0)
+        d = t0 * n0 + t1 * n1 + t2 * n2
+        t = np.array((t0 - d * n0, t1 - d * n1, t2 - d * n2))
+        t /= np.sqrt(t[0] ** 2 + t[1] ** 2 + t[2] ** 2)
+        u = np.array(cross(n0, n1, n2, t[0], t[1], t[2]))
+        a = b = 0.0
+        h = 1e-8
+        for _ in range(12):
+            f = _glide(S, y, i, R, W, P, a * t, b * u)
+            fa, fb = f[0] * t[0] + f[1] * t[1] + f[2] * t[2], f[0] * u[0] + f[1] * u[1] + f[2] * u[2]
+            if abs(fa) + abs(fb) <= FLOOR:
+                break
+            f = _glide(S, y, i, R, W, P, (a + h) * t, b * u)
+            j00 = (f[0] * t[0] + f[1] * t[1] + f[2] * t[2] - fa) / h
+            j10 = (f[0] * u[0] + f[1] * u[1] + f[2] * u[2] - fb) / h
+            f = _glide(S, y, i, R, W, P, a * t, (b + h) * u)
+            j01 = (f[0] * t[0] + f[1] * t[1] + f[2] * t[2] - fa) / h
+            j11 = (f[0] * u[0] + f[1] * u[1] + f[2] * u[2] - fb) / h
+            det = j00 * j11 - j01 * j10
+            if det == 0.0:
+                break
+            a -= (j11 * fa - j01 * fb) / det
+            b -= (j00 * fb - j10 * fa) / det
+        _glide(S, y, i, R, W, P, a * t, b * u)
+        free = (S.shape[i, 0], S.shape[i, 1], S.shape[i, 2])
+        if _lifted(S, y, i, R, free) < floor:
+            free = loaded
+    if _strain(S, y, i, R, W, free, before, False) > 0.0:     # never more strain energy than it left with
+        free = loaded
+    pad_release(S.mu, y, len(S.contact), -_strain(S, y, i, R, W, free, before, True))
+
+
+@_inner
+def _strain(S, y, i, R, W, shape, before, add):
+    """The static work of leg i's cells from deflections `before` to those of its free shape `shape` (set as leg
+    i's; W holds the leg state there), added to their work if `add`."""
+    cd, cf, cn, ck, cc, cy = S.cells
+    _lifted(S, y, i, R, shape)
+    foot = free_footpad(S.geo, S.cells, i, S.mem[i], S.shape[i], y[0:3], R)
+    _leg_force_call(S.geo, S.cells, i, S.mem[i], S.shape[i], np.array(foot), (y[0:3], R, (y[3], y[4], y[5]),
+                    y[10:13]), (W.dt[i], W.ft[i], W.rt[i], W.Xt[i]))
+    total = 0.0
+    for j in range(1 + S.geo[5][i]):
+        m = cn[i, j]
+        w = crush_cell.static_work(cd[i, j, :m], cf[i, j, :m], ck[i, j], cy[i, j], S.mem[i, j, 0], S.mem[i, j, 1],
+                                   before[j], W.dt[i, j])
+        if add:
+            S.energy[i, j] += w
+        total += w
+    return total
 
 
 @_inner

@@ -40,7 +40,7 @@ from functools import cached_property
 import numpy as np
 from numba import njit
 
-from .crush_cell import CellModel
+from .crush_cell import CellModel, permanent_set
 from .telescoping_leg import cell_force
 from .terrain import bearing_normal
 from .vec3 import cross, mtv, mv
@@ -473,9 +473,18 @@ def free_footpad(geo, cells, i, mem, shape, r, R):
 
 @njit(cache=True)
 def lift_shape(geo, cells, i, mem, loaded, main, r, R):
-    """Stored free geometry of a tripod leg lifting off: the strut lengths (Lp, l1, l2) leg_force returned as its
-    shape `loaded` (main, r, R unused: the other kinds' interface)."""
-    return loaded[0], loaded[1], loaded[2]
+    """Free geometry of a tripod leg lifting off with the strut lengths `loaded` (Lp, l1, l2; leg_force's shape):
+    each strut at the length nearest to it where its cells carry no force (a cell's deflection at most its
+    permanent set), as a massless leg in the air carries none (X = G^T T = 0 gives T = 0). A footpad with mass
+    leaves the ground with its in-plane inertia still on the struts; the elastic energy they then give up goes
+    with the footpad's in-plane motion, which a lift-off drops (footpad_mass.pad_switch). main, r, R unused: the
+    other kinds' interface."""
+    t = geo[10][i]
+    k, m = cells[3][i], mem
+    x0 = min(t[3, 0] - loaded[0], permanent_set(k[0], m[0, 0], m[0, 1]))
+    x1 = min(max(t[3, 1] - loaded[1], -permanent_set(k[2], m[2, 0], m[2, 1])), permanent_set(k[1], m[1, 0], m[1, 1]))
+    x2 = min(max(t[3, 2] - loaded[2], -permanent_set(k[4], m[4, 0], m[4, 1])), permanent_set(k[3], m[3, 0], m[3, 1]))
+    return t[3, 0] - x0, t[3, 1] - x1, t[3, 2] - x2
 
 
 @njit(cache=True)
@@ -499,9 +508,13 @@ def slack(geo, cells, i, mem, defl, X, P, R):
 @njit(cache=True)
 def fold(geo, i, P, r, R):
     """|u . (e1 x e2)| at tripod leg i's joint with its footpad at P (terrain axes): below MIN_DET the struts
-    fold flat (no stiffness across their plane; the trilateration's branch could flip)."""
+    fold flat (no stiffness across their plane; the trilateration's branch could flip). 0 for a cantilever whose
+    primary has stroked to its knee (the inner cylinder at the end of its travel: no footpad below the knee)."""
+    t = geo[10][i]
     b0, b1, b2 = mtv(R, P[0] - r[0], P[1] - r[1], P[2] - r[2])
-    return abs(fold_at(geo[10][i], b0, b1, b2))
+    if t[4, 1] > 0.0 and not strut_lengths_at(t, b0, b1, b2)[0] > t[4, 0]:
+        return 0.0
+    return abs(fold_at(t, b0, b1, b2))
 
 
 def strut_axial_forces(forces: np.ndarray) -> np.ndarray:

@@ -62,7 +62,8 @@ def outcome(cfg: SceneConfig, res: Result) -> tuple[str, str]:
     if st == "member_strike":
         return "body_contact", f"the intermediate member of leg {res.struck + 1} struck the terrain"
     if st == "folded_flat":
-        return "failed", f"leg {res.struck + 1} folded flat: its struts met coplanar at the footpad or knee"
+        return "failed", (f"leg {res.struck + 1} folded flat: its struts met coplanar at the footpad or knee, or a "
+                          "cantilever's primary stroked to its knee")
     if st == "failed":
         return "failed", "the step size collapsed or the state became non-finite"
     speed = terrain_speed(res.t, res.y)

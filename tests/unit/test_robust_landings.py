@@ -137,6 +137,35 @@ def test_mixed_landings_that_failed_land(k):
 
 
 @pytest.mark.skipif(ROOT is None, reason="needs the repository's benchmarks/")
+@pytest.mark.parametrize("k", [448, 594])
+def test_tripod_struts_unload_as_their_footpad_leaves(k):
+    """Inverted-tripod landings of the mixed sweep with --tripods (13 kg footpads on dry sand), run to 1 s: a
+    footpad with mass left the ground with its in-plane inertia still on its struts (up to 270 N); kept in the air,
+    that load pulled it off again at each touchdown, and the grazing band's rise stroked the struts anew each
+    time (2,783 touch-and-leave cycles in 594), so that a cell gave back 147 J (448) and 385 J (594) more than it
+    stored. A massless leg in the air carries no force: its struts unload as it leaves, their energy going with
+    the footpad's in-plane motion that the lift-off drops. Criteria: the sweep's (no cell gives back more than it
+    stored, the footpad-terrain interface gives no energy, each beyond 1e-4 of the energy in) and closure."""
+    r = _sweep().one(k, 1.0, former=False, tripods=True)
+    assert r["kind"] == "tripod_lunar" and r["footpad_mass"] > 0 and r["soil"] is not None
+    assert r["status"] != "failed" and r["finite"], f"landing {k}: {r}"
+    assert not r["given_back"] and not r["interface_gives"], f"landing {k}: {r['cell_absorbed_min_J']} J"
+    assert r["closure_rel"] < CLOSURE
+
+
+@pytest.mark.skipif(ROOT is None, reason="needs the repository's benchmarks/")
+def test_a_cantilever_primary_stroked_to_its_knee_ends_the_landing():
+    """Landing 133 of the mixed sweep with --tripods (the LM-class cantilever, 157 kJ in): a primary strokes past its
+    drawn curve, on its bottoming branch, to its knee (1.16 m against the 0.95 m from the footpad to the knee),
+    where no footpad lies below the knee (the strut lengths have no footpad: NaN in the air). The run ends there,
+    `folded_flat`, with its audit closed, not with a state gone non-finite."""
+    r = _sweep().one(133, 1.0, former=False, tripods=True)
+    assert r["kind"] == "cantilever_lm"
+    assert r["status"] == "folded_flat" and r["finite"], f"landing 133: {r}"
+    assert r["closure_rel"] < CLOSURE
+
+
+@pytest.mark.skipif(ROOT is None, reason="needs the repository's benchmarks/")
 def test_cantilever_draws_are_valid_legs():
     """The mixed sweep with --tripods draws the LM-class cantilever's cells by their names in the file: every drawn
     primary curve ends short of the knee (TripodLeg refuses one at or past it) and the secondaries are drawn too
