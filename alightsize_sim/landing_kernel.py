@@ -29,7 +29,7 @@ from .rigid_body import free_flight, quat_matrix, quat_rate
 from .stability import hanging_margin, quiescence_momenta, quiescence_update, stable_by_energy, tipping_margins
 from .legs import TELESCOPING, TRIPOD, at_set, folded, free_footpad, leg_force, lift_shape, member_strike, slack
 from .telescoping_leg import aim
-from .terrain import FACE_GAP, clearance
+from .terrain import FACE_GAP, bearing_normal, clearance
 from .vec3 import cross, mtv, mv
 
 # Dormand-Prince 5(4).
@@ -498,16 +498,65 @@ def _lifted(S, y, i, R, shape):
 
 
 @_inner
+def _glide(S, y, i, R, W, P, t, u):
+    """(a, b): leg i's rate-free force on the capsule (terrain axes, W its leg state) with its footpad at P + a t + b
+    u, along the surface directions t and u (its shape: the strut lengths there)."""
+    Q = np.empty(3)
+    for c in range(3):
+        Q[c] = P[c] + t[c] + u[c]
+    zero = (0.0, 0.0, 0.0)
+    _, S.shape[i, 0], S.shape[i, 1], S.shape[i, 2] = _leg_force_call(
+        S.geo, S.cells, i, S.mem[i], S.shape[i], Q, (y[0:3], R, zero, zero), (W.dt[i], W.ft[i], W.rt[i], W.Xt[i]))
+    f0, f1, f2 = mv(R, W.Xt[i, 0], W.Xt[i, 1], W.Xt[i, 2])
+    return f0, f1, f2
+
+
+@_inner
 def _relax(S, y, i, R, loaded, W):
-    """A tripod leg lifting off with the strut lengths `loaded` takes the free shape that unloads it (lift_shape),
-    as a massless leg in the air carries no force, unless that would sink its footpad into the ground (where its
-    touchdown could not be found) or lower than it left: then it keeps `loaded`. The cells' static work from their
-    lift-off deflections to those of that shape is added to theirs, and what they give up (the energy of the
-    footpad's in-plane motion, which the massless leg drops) to the friction work (footpad_mass.pad_release)."""
+    """A tripod leg lifting off with the strut lengths `loaded` takes the free shape that unloads it, as a massless
+    leg in the air carries no force: its struts unloaded (lift_shape) where that keeps its footpad from sinking
+    into the ground (where its touchdown could not be found); else the footpad glides along the surface to where
+    the struts push only normal to it (the least strut energy on it, found by Newton's method: the leg then
+    touches down again at once, pushing); else it keeps `loaded`. The cells' static work from their lift-off
+    deflections to those of that shape is added to theirs, and what they give up (the energy of the footpad's
+    in-plane motion, which the massless leg drops) to the friction work (footpad_mass.pad_release)."""
+    cells, mem = S.cells, S.mem
     before = W.dt[i].copy()
     free = (S.shape[i, 0], S.shape[i, 1], S.shape[i, 2])
     floor = min(_lifted(S, y, i, R, loaded), 0.0) - 0.5 * GTOL       # round-off below it still finds the ground
-    if _lifted(S, y, i, R, free) < floor or _strain(S, y, i, R, W, free, before, False) > 0.0:
+    if _lifted(S, y, i, R, free) < floor:
+        _lifted(S, y, i, R, loaded)
+        foot = free_footpad(S.geo, cells, i, mem[i], S.shape[i], y[0:3], R)
+        P = np.array((foot[0], foot[1], foot[2]))
+        n0, n1, n2 = bearing_normal(S.geo[9], P[0], P[1], P[2])
+        t0, t1, t2 = (1.0, 0.0, 0.0) if abs(n0) < 0.9 else (0.0, 1.0, 0.0)
+        d = t0 * n0 + t1 * n1 + t2 * n2
+        t = np.array((t0 - d * n0, t1 - d * n1, t2 - d * n2))
+        t /= np.sqrt(t[0] ** 2 + t[1] ** 2 + t[2] ** 2)
+        u = np.array(cross(n0, n1, n2, t[0], t[1], t[2]))
+        a = b = 0.0
+        h = 1e-8
+        for _ in range(12):
+            f = _glide(S, y, i, R, W, P, a * t, b * u)
+            fa, fb = f[0] * t[0] + f[1] * t[1] + f[2] * t[2], f[0] * u[0] + f[1] * u[1] + f[2] * u[2]
+            if abs(fa) + abs(fb) <= FLOOR:
+                break
+            f = _glide(S, y, i, R, W, P, (a + h) * t, b * u)
+            j00 = (f[0] * t[0] + f[1] * t[1] + f[2] * t[2] - fa) / h
+            j10 = (f[0] * u[0] + f[1] * u[1] + f[2] * u[2] - fb) / h
+            f = _glide(S, y, i, R, W, P, a * t, (b + h) * u)
+            j01 = (f[0] * t[0] + f[1] * t[1] + f[2] * t[2] - fa) / h
+            j11 = (f[0] * u[0] + f[1] * u[1] + f[2] * u[2] - fb) / h
+            det = j00 * j11 - j01 * j10
+            if det == 0.0:
+                break
+            a -= (j11 * fa - j01 * fb) / det
+            b -= (j00 * fb - j10 * fa) / det
+        _glide(S, y, i, R, W, P, a * t, b * u)
+        free = (S.shape[i, 0], S.shape[i, 1], S.shape[i, 2])
+        if _lifted(S, y, i, R, free) < floor:
+            free = loaded
+    if _strain(S, y, i, R, W, free, before, False) > 0.0:     # never more strain energy than it left with
         free = loaded
     pad_release(S.mu, y, len(S.contact), -_strain(S, y, i, R, W, free, before, True))
 
