@@ -1,5 +1,7 @@
 """`combined`: sigma_max = |P/A| + |M c/I| at the worst fibre, against yield (AFFDL-TR-66-33 App. IV)."""
 
+import math
+
 import pytest
 from member_cases import PSI, outcome
 
@@ -33,3 +35,20 @@ def test_signs_give_the_worst_fibre(load, force):
     base = outcome(CHECK, LOWER_LEG, "be-31al")
     o = outcome({**CHECK, "load": load, "moment_force": force}, LOWER_LEG, "be-31al")
     assert o.stress == base.stress and o.factor == base.factor
+
+
+def test_cantilevered_tube_outrigger_against_roark():
+    """An outrigger as the check takes it, a thin tube cantilevered from the body (outside the 1966 report's cases):
+    Young & Budynas, Roark's Formulas 7th ed. (2002), Table 8.1 case 1a, end load W on a cantilever of length l:
+    M_max = W l at the wall; Table A.1 case 16, hollow circle: A = pi (D^2 - d^2) / 4, I = pi (D^4 - d^4) / 64,
+    c = D / 2. A 100 x 3 mm tube, 10 kN along it, W = 2 kN at l = 0.6 m: sigma = P/A + W l c / I = 10.94 + 55.75
+    MPa. The check takes App. IV's thin-tube I = pi r^3 t (r the mean radius), low by the factor 1 + t^2 / (4 r^2)
+    (9.6e-4 here), so its bending stress is that much above Roark's: conservative. Closed form: 1e-9 (round-off)."""
+    D, d, P, W, length = 0.100, 0.094, 10e3, 2e3, 0.6
+    r, t = (D + d) / 4, (D - d) / 2
+    area, inertia = math.pi * (D ** 2 - d ** 2) / 4, math.pi * (D ** 4 - d ** 4) / 64
+    o = outcome({"kind": "combined", "load": "10 kN", "moment_force": "2 kN", "moment_arm": "0.6 m"},
+                {"shape": "tube", "outside_diameter": "100 mm", "wall": "3 mm"})
+    bending = W * length * (D / 2) / inertia
+    assert o.stress == pytest.approx(P / area + bending * (1 + t ** 2 / (4 * r ** 2)), rel=1e-9)
+    assert o.stress > P / area + bending
