@@ -498,17 +498,19 @@ def _lifted(S, y, i, R, shape):
 
 
 @_inner
-def _glide(S, y, i, R, W, P, t, u):
-    """(a, b): leg i's rate-free force on the capsule (terrain axes, W its leg state) with its footpad at P + a t + b
-    u, along the surface directions t and u (its shape: the strut lengths there)."""
+def _glide(S, y, i, R, W, frame, a, b):
+    """(F . t, F . u): the surface components of leg i's rate-free force F on the capsule (terrain axes; W its leg
+    state) with its footpad at P + a t + b u, frame = (P, t, u), t and u unit directions along the surface (its
+    shape: the strut lengths there)."""
+    P, t, u = frame
     Q = np.empty(3)
     for c in range(3):
-        Q[c] = P[c] + t[c] + u[c]
+        Q[c] = P[c] + a * t[c] + b * u[c]
     zero = (0.0, 0.0, 0.0)
     _, S.shape[i, 0], S.shape[i, 1], S.shape[i, 2] = _leg_force_call(
         S.geo, S.cells, i, S.mem[i], S.shape[i], Q, (y[0:3], R, zero, zero), (W.dt[i], W.ft[i], W.rt[i], W.Xt[i]))
     f0, f1, f2 = mv(R, W.Xt[i, 0], W.Xt[i, 1], W.Xt[i, 2])
-    return f0, f1, f2
+    return f0 * t[0] + f1 * t[1] + f2 * t[2], f0 * u[0] + f1 * u[1] + f2 * u[2]
 
 
 @_inner
@@ -534,25 +536,20 @@ def _relax(S, y, i, R, loaded, W):
         t = np.array((t0 - d * n0, t1 - d * n1, t2 - d * n2))
         t /= np.sqrt(t[0] ** 2 + t[1] ** 2 + t[2] ** 2)
         u = np.array(cross(n0, n1, n2, t[0], t[1], t[2]))
-        a = b = 0.0
-        h = 1e-8
+        frame, a, b, h = (P, t, u), 0.0, 0.0, 1e-8
         for _ in range(12):
-            f = _glide(S, y, i, R, W, P, a * t, b * u)
-            fa, fb = f[0] * t[0] + f[1] * t[1] + f[2] * t[2], f[0] * u[0] + f[1] * u[1] + f[2] * u[2]
+            fa, fb = _glide(S, y, i, R, W, frame, a, b)
             if abs(fa) + abs(fb) <= FLOOR:
                 break
-            f = _glide(S, y, i, R, W, P, (a + h) * t, b * u)
-            j00 = (f[0] * t[0] + f[1] * t[1] + f[2] * t[2] - fa) / h
-            j10 = (f[0] * u[0] + f[1] * u[1] + f[2] * u[2] - fb) / h
-            f = _glide(S, y, i, R, W, P, a * t, (b + h) * u)
-            j01 = (f[0] * t[0] + f[1] * t[1] + f[2] * t[2] - fa) / h
-            j11 = (f[0] * u[0] + f[1] * u[1] + f[2] * u[2] - fb) / h
+            j00, j10 = _glide(S, y, i, R, W, frame, a + h, b)     # Jacobian by forward differences
+            j01, j11 = _glide(S, y, i, R, W, frame, a, b + h)
+            j00, j10, j01, j11 = (j00 - fa) / h, (j10 - fb) / h, (j01 - fa) / h, (j11 - fb) / h
             det = j00 * j11 - j01 * j10
             if det == 0.0:
                 break
             a -= (j11 * fa - j01 * fb) / det
             b -= (j00 * fb - j10 * fa) / det
-        _glide(S, y, i, R, W, P, a * t, b * u)
+        _glide(S, y, i, R, W, frame, a, b)
         free = (S.shape[i, 0], S.shape[i, 1], S.shape[i, 2])
         if _lifted(S, y, i, R, free) < floor:
             free = loaded
