@@ -445,6 +445,37 @@ def _pad_release(mu, y, n, e):
     return add
 
 
+def taken(mu, y, n, C):
+    """Energy the legs have taken from the capsule as state y holds it (J; the energy audit's terms, landing.simulate):
+    without footpad mass all of it (the legs' work y[13]); with mass the friction, leg-other, damper and soil work
+    and the footpads' kinetic energy, the cells' rate-free work not included (it is not state)."""
+    if not isinstance(mu, PadModel):
+        return y[13]
+    return _taken(mu, y, n, C)
+
+
+@overload(taken)
+def _taken_ov(mu, y, n, C):
+    if not is_pad(mu):
+        return lambda mu, y, n, C: y[13]
+    return lambda mu, y, n, C: _taken(mu, y, n, C)
+
+
+@njit(cache=True)
+def _taken(mu, y, n, C):
+    k = NB + 4 * n
+    e, v2 = 0.0, 0.0
+    for c in range(k, k + 2 + n * C):
+        e += y[c]
+    for i in range(n):
+        v2 += y[NB + 4 * i + 2] ** 2 + y[NB + 4 * i + 3] ** 2
+    if mu.area > 0.0:
+        e += y[-1]
+        for i in range(n):
+            v2 += y[_sink_at(y, n, i) + 1] ** 2
+    return e + 0.5 * mu.mass * v2
+
+
 @njit(cache=True)
 def _stop(mu, y, i, n):
     """Footpad i brought to rest in the plane, its kinetic energy there added to the friction work."""

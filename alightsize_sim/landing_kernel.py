@@ -22,7 +22,7 @@ from . import crush_cell
 from .borrow import borrowed
 from .bundle import bundler
 from .footpad_mass import BAND as PAD_BAND
-from .footpad_mass import (FACE, FLOOR, STARTED, ground_event, has_mass, pad_event, pad_ground, pad_rates,
+from .footpad_mass import (FACE, FLOOR, STARTED, ground_event, has_mass, pad_event, pad_ground, pad_rates, taken,
                            pad_release, pad_settle, pad_switch)
 from .footpad_slip import contact_force, slides_by_position, slip_events
 from .rigid_body import free_flight, quat_matrix, quat_rate
@@ -54,7 +54,7 @@ K_STEPS, K_REJECTED, K_RHS, K_HIST, K_EVENTS, K_TRIALS = range(6)
 N_MT = 7
 # Run scalars (float array): step size, quiescence clock, reference momentum, first bottoming (t, leg, cell), the
 # leg whose intermediate member struck the terrain, since when a capsule with a leg in the air has held stable.
-S_H, S_QUIET, S_MOMENTUM, S_BOT_T, S_BOT_LEG, S_BOT_CELL, S_STRUCK, S_HANG = range(8)
+S_H, S_QUIET, S_MOMENTUM, S_BOT_T, S_BOT_LEG, S_BOT_CELL, S_STRUCK, S_HANG, S_EREF = range(9)
 
 MAX_STALL = 100     # accepted steps in a row that do not advance time before the run is declared failed
 GTOL = 1e-12       # m: a contact event function this close above zero counts as there
@@ -69,6 +69,8 @@ BAND = 1e-4         # m: the default grazing band (ctl[C_BAND]): an unarmed leg 
                     # past zero, where it carries no force (grazing contact never chatters); see _events
 GRAZE_SPEED = 50.0  # m/s: the band must take a footpad this fast more than event_tol to cross (Controls)
 PATH_FLOOR = 100.0  # event_tol: steps this short or shorter skip the footpad path error (_error_norm)
+ENERGY_RATE = 50.0  # 1/s: a step's energy defect may be rtol x this x the landing's energy scale per second
+                    # (_error_norm): a landing of 1 s at rtol 1e-6 then closes its audit within 5e-5
 
 # Compiled functions that only compiled code calls (they take bundles, which Python cannot build): no Python or C
 # wrapper is compiled for them.
@@ -728,10 +730,33 @@ def _error_norm(S, y, y1, err, W, weight, h):
     e = np.sqrt(e / len(y))
     if h <= PATH_FLOOR * ctl[C_EVENTTOL]:
         return e
+    e = max(e, abs(_energy_defect(S, y, y1, W)) / (ENERGY_RATE * ctl[C_RTOL] * S.run_state[S_EREF] * h))
     for i in range(mt.shape[0]):
         load = min(np.sqrt(Xt[i, 0] ** 2 + Xt[i, 1] ** 2 + Xt[i, 2] ** 2) / weight, 1.0)
         e = max(e, load * mt[i, 5] / (ctl[C_ATOL] + ctl[C_RTOL] * reach[i]))
     return e
+
+
+@_inner
+def _energy_defect(S, y, y1, W):
+    """What the capsule gave up over the step y -> y1 less what its legs took (J): the energy audit
+    (landing.simulate) over one step, the cells' rate-free work exact from their last commit (W at y1)."""
+    m, inertia, g = S.mass, S.inertia, S.gravity
+    d = 0.5 * m * (y[3] ** 2 + y[4] ** 2 + y[5] ** 2 - y1[3] ** 2 - y1[4] ** 2 - y1[5] ** 2)
+    for c in range(3):
+        d += 0.5 * inertia[c] * (y[10 + c] ** 2 - y1[10 + c] ** 2) + m * g[c] * (y1[c] - y[c])
+    n, C = S.mem.shape[0], S.mem.shape[1]
+    d -= taken(S.mu, y1, n, C) - taken(S.mu, y, n, C)
+    if has_mass(S.mu):
+        cd, cf, cn, ck, cc, cy = S.cells
+        mem, last = S.mem, S.last
+        for i in range(n):
+            if S.contact[i] and last[i, 2 * C] > 0.0:
+                for j in range(1 + S.geo[5][i]):
+                    k = cn[i, j]
+                    d -= crush_cell.static_work(cd[i, j, :k], cf[i, j, :k], ck[i, j], cy[i, j], mem[i, j, 0],
+                                                mem[i, j, 1], last[i, j], W.dt[i, j])
+    return d
 
 
 @njit(cache=True)
