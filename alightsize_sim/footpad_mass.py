@@ -445,35 +445,38 @@ def _pad_release(mu, y, n, e):
     return add
 
 
-def taken(mu, y, n, C):
-    """Energy the legs have taken from the capsule as state y holds it (J; the energy audit's terms, landing.simulate):
-    without footpad mass all of it (the legs' work y[13]); with mass the friction, leg-other, damper and soil work
-    and the footpads' kinetic energy, the cells' rate-free work not included (it is not state)."""
+def taken(mu, y, y1, n, C):
+    """Energy the legs took from the capsule over the step y -> y1 as the state holds it (J; the energy audit's
+    terms, landing.simulate), as differences (no round-off of the running totals): without footpad mass all of
+    it (the legs' work y[13]); with mass the friction, leg-other, damper and soil work and the footpads' kinetic
+    energy, the cells' rate-free work not included (it is not state)."""
     if not isinstance(mu, PadModel):
-        return y[13]
-    return _taken(mu, y, n, C)
+        return y1[13] - y[13]
+    return _taken(mu, y, y1, n, C)
 
 
 @overload(taken)
-def _taken_ov(mu, y, n, C):
+def _taken_ov(mu, y, y1, n, C):
     if not is_pad(mu):
-        return lambda mu, y, n, C: y[13]
-    return lambda mu, y, n, C: _taken(mu, y, n, C)
+        return lambda mu, y, y1, n, C: y1[13] - y[13]
+    return lambda mu, y, y1, n, C: _taken(mu, y, y1, n, C)
 
 
 @njit(cache=True)
-def _taken(mu, y, n, C):
+def _taken(mu, y, y1, n, C):
     k = NB + 4 * n
-    e, v2 = 0.0, 0.0
+    e, dv2 = 0.0, 0.0
     for c in range(k, k + 2 + n * C):
-        e += y[c]
+        e += y1[c] - y[c]
     for i in range(n):
-        v2 += y[NB + 4 * i + 2] ** 2 + y[NB + 4 * i + 3] ** 2
+        for c in range(NB + 4 * i + 2, NB + 4 * i + 4):
+            dv2 += (y1[c] - y[c]) * (y1[c] + y[c])
     if mu.area > 0.0:
-        e += y[-1]
+        e += y1[-1] - y[-1]
         for i in range(n):
-            v2 += y[_sink_at(y, n, i) + 1] ** 2
-    return e + 0.5 * mu.mass * v2
+            c = _sink_at(y, n, i) + 1
+            dv2 += (y1[c] - y[c]) * (y1[c] + y[c])
+    return e + 0.5 * mu.mass * dv2
 
 
 @njit(cache=True)

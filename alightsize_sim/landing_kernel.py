@@ -71,6 +71,9 @@ GRAZE_SPEED = 50.0  # m/s: the band must take a footpad this fast more than even
 PATH_FLOOR = 100.0  # event_tol: steps this short or shorter skip the footpad path error (_error_norm)
 ENERGY_RATE = 50.0  # 1/s: a step's energy defect may be rtol x this x the landing's energy scale per second
                     # (_error_norm): a landing of 1 s at rtol 1e-6 then closes its audit within 5e-5
+ROUND_OFF = 1e-13   # of the landing's energy scale: a step's energy defect this small passes (the cells' work from
+                    # their curves' antiderivatives, kJ, carries round-off of 1e-12 J; at rtol 1e-10 and 1e-10 s
+                    # steps the defect no longer falls with h)
 
 # Compiled functions that only compiled code calls (they take bundles, which Python cannot build): no Python or C
 # wrapper is compiled for them.
@@ -595,8 +598,10 @@ def _clear(S, y, i, R):
     n = len(S.contact)
     foot = free_footpad(S.geo, S.cells, i, S.mem[i], S.shape[i], y[0:3], R)
     # A LOCKED or BANDED leg touches only the band past zero: a footpad within half of it below the ground (one
-    # that touched down there and was held inside) is found and stays where it is.
-    floor = -0.5 * S.ctl[C_BAND] if _past_band(S, i) else 0.0
+    # that touched down there and was held inside) is found and stays where it is. One deeper is raised to GTOL
+    # above that half, so that a face it meets next is told from the band by _switch (at the half exactly, its
+    # round-off read a jump into a rock's side as the band: 4,608 touch-and-leave steps at one instant).
+    floor = GTOL - 0.5 * S.ctl[C_BAND] if _past_band(S, i) else 0.0
     gap = foot[2] - pad_ground(S.mu, y, i, n, S.geo[9], foot[0], foot[1]) - floor
     if gap >= 0.0:
         return
@@ -730,7 +735,8 @@ def _error_norm(S, y, y1, err, W, weight, h):
     e = np.sqrt(e / len(y))
     if h <= PATH_FLOOR * ctl[C_EVENTTOL]:
         return e
-    e = max(e, abs(_energy_defect(S, y, y1, W)) / (ENERGY_RATE * ctl[C_RTOL] * S.run_state[S_EREF] * h))
+    scale = S.run_state[S_EREF]
+    e = max(e, abs(_energy_defect(S, y, y1, W)) / (ENERGY_RATE * ctl[C_RTOL] * scale * h + ROUND_OFF * scale))
     for i in range(mt.shape[0]):
         load = min(np.sqrt(Xt[i, 0] ** 2 + Xt[i, 1] ** 2 + Xt[i, 2] ** 2) / weight, 1.0)
         e = max(e, load * mt[i, 5] / (ctl[C_ATOL] + ctl[C_RTOL] * reach[i]))
@@ -742,11 +748,12 @@ def _energy_defect(S, y, y1, W):
     """What the capsule gave up over the step y -> y1 less what its legs took (J): the energy audit
     (landing.simulate) over one step, the cells' rate-free work exact from their last commit (W at y1)."""
     m, inertia, g = S.mass, S.inertia, S.gravity
-    d = 0.5 * m * (y[3] ** 2 + y[4] ** 2 + y[5] ** 2 - y1[3] ** 2 - y1[4] ** 2 - y1[5] ** 2)
-    for c in range(3):
-        d += 0.5 * inertia[c] * (y[10 + c] ** 2 - y1[10 + c] ** 2) + m * g[c] * (y1[c] - y[c])
+    d = 0.0
+    for c in range(3):                       # differences of squares as (a - b)(a + b): round-off of the step's
+        d += (0.5 * m * (y[3 + c] - y1[3 + c]) * (y[3 + c] + y1[3 + c]) + m * g[c] * (y1[c] - y[c])   # change only
+              + 0.5 * inertia[c] * (y[10 + c] - y1[10 + c]) * (y[10 + c] + y1[10 + c]))
     n, C = S.mem.shape[0], S.mem.shape[1]
-    d -= taken(S.mu, y1, n, C) - taken(S.mu, y, n, C)
+    d -= taken(S.mu, y, y1, n, C)
     if has_mass(S.mu):
         cd, cf, cn, ck, cc, cy = S.cells
         mem, last = S.mem, S.last

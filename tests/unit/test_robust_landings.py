@@ -154,6 +154,35 @@ def test_tripod_struts_unload_as_their_footpad_leaves(k):
 
 
 @pytest.mark.skipif(ROOT is None, reason="needs the repository's benchmarks/")
+@pytest.mark.parametrize("k", [4185, 6958, 9323])
+def test_tripod_landings_that_touch_and_leave_close_their_audit(k):
+    """Inverted-tripod landings of the mixed sweep with --tripods (footpads of 2.6-14 kg on regolith), run to 1 s,
+    whose audit did not close within 1e-4: 4185 and 6958 lie on their side, a footpad touching and its compressed
+    secondary pulling it off again at every step (600 steps in 4185), each step passing the state's error test with
+    an energy error of the same sign (closure 1.3e-4 and 2.7e-3; at rtol 1e-8, 5.9e-6 and 5.6e-4); 9323 (7.7e-4)
+    lifted a footpad off in its last step, whose released strut energy the record's last row, written before the
+    switch, did not hold. Criterion: the sweep's closure bound; the steps' energy test bounds it by 5e-5 per
+    simulated second at rtol 1e-6."""
+    r = _sweep().one(k, 1.0, former=False, tripods=True)
+    assert r["kind"] == "tripod_lunar" and r["soil"] == "lunar regolith"
+    assert r["status"] != "failed" and r["finite"], f"landing {k}: {r}"
+    assert r["closure_rel"] < CLOSURE
+
+
+@pytest.mark.skipif(ROOT is None, reason="needs the repository's benchmarks/")
+def test_a_footpad_raised_in_the_band_meets_a_rocks_side_and_lands():
+    """Landing 5249 of the mixed sweep with --tripods (the lunar telescoping lander, massless held footpads,
+    2e-3 m/s^2, a rock): a leg leaving from deep in the grazing band is raised to half of it; at exactly half, its
+    free footpad jumping into the rock's side read as touching the band, not a face, and it touched and left at one
+    instant 4,608 times until the step size collapsed (`failed` at 0.74 s). Raised to GTOL above half, it is caught
+    on the face and the landing runs to its end."""
+    r = _sweep().one(5249, 1.0, former=False, tripods=True)
+    assert r["kind"] == "telescoping_lunar" and r["footpad_mass"] == 0.0 and r["features"] > 0
+    assert r["status"] != "failed" and r["finite"], f"landing 5249: {r}"
+    assert r["closure_rel"] < CLOSURE
+
+
+@pytest.mark.skipif(ROOT is None, reason="needs the repository's benchmarks/")
 def test_a_cantilever_primary_stroked_to_its_knee_ends_the_landing():
     """Landing 133 of the mixed sweep with --tripods (the LM-class cantilever, 157 kJ in): a primary strokes past its
     drawn curve, on its bottoming branch, to its knee (1.16 m against the 0.95 m from the footpad to the knee),
