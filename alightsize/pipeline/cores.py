@@ -3,7 +3,11 @@
 
 from __future__ import annotations
 
+from typing import Annotated
+
+from alightsize.common.typed import Number, Quantity, Table
 from alightsize.model.materials import Material
+from alightsize.weights.methods import WeightSpec
 
 
 def crush_stroke(deflection, force) -> tuple[float, float]:
@@ -12,14 +16,20 @@ def crush_stroke(deflection, force) -> tuple[float, float]:
     return max(force[:-1]), deflection[-2]
 
 
-def core_prism(weight: dict, deflection, force, material: Material, cell: str) -> dict:
-    """The `weight` table (without its `method` and `cell`) as the prism weighing the core of a cell whose curve is
-    (deflection m, force N), in `material` (one with crush_strength and stroke_fraction)."""
+class CoreWeight(Table):
+    """The `weight` keys of an item weighed as a cell's crushable core: the cell's curve gives its prism."""
+
+    allowance: Annotated[float, Number("any")] = 0.0
+    extra: Annotated[float, Quantity("mass")] = 0.0
+    label: str = ""
+    note: str = ""
+
+
+def core_weight(t: CoreWeight, deflection, force, material: Material, where: str) -> WeightSpec:
+    """The prism weighing the core of a cell whose curve is (deflection m, force N) in `material` (one with
+    crush_strength and stroke_fraction), with the allowance, extra mass and label of `t`."""
     crush, stroke = crush_stroke(deflection, force)
     assert material.crush_strength is not None and material.stroke_fraction is not None   # callers check it
-    prism = {k: v for k, v in weight.items() if k not in ("method", "cell")}
-    prism.update(method="prism", area=f"{crush / material.crush_strength!r} m^2",
-                 length=f"{stroke / material.stroke_fraction!r} m")
-    prism.setdefault("note", f"cell {cell}: area = crushing force / crush strength, "
-                             f"length = stroke / {material.stroke_fraction:g}")
-    return prism
+    return WeightSpec("prism", {"rho": None, "area": crush / material.crush_strength,
+                                "length": stroke / material.stroke_fraction, "allowance": t.allowance,
+                                "extra": t.extra}, where, t.label)

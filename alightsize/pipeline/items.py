@@ -115,7 +115,7 @@ class ItemTable(RequiredFactor):
     length: Annotated[float, Quantity("length")] | None = None
     section: dict | None = None
     check: list[dict] = []
-    weight: dict | None = None
+    weight: dict | WeightSpec | None = None    # WeightSpec: a crushable core's prism (pipeline.cores)
     size: Size | None = None
     note: str = ""
 
@@ -166,7 +166,8 @@ def read_item(node: Node, materials: dict[str, Material], required_default: floa
         read.append(check)
     checks = tuple(read)
     required = required_default if t.required_design_factor is None else t.required_design_factor
-    weight = read_weight(node.table("weight"), materials) if t.weight is not None else None
+    weight = (t.weight if isinstance(t.weight, WeightSpec)
+              else read_weight(node.table("weight"), materials) if t.weight is not None else None)
     size = _size_spec(t.size, node.table("size"), section, checks) if t.size is not None else None
     item = Item(t.name, t.count, materials[t.material], section, t.length, checks, required, weight, size, t.note,
                 node.path)

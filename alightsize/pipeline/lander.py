@@ -53,7 +53,7 @@ from alightsize.model.legs import TrussTable
 from alightsize.model.scene_config import (ArticulatedLegs, Cell, SceneConfig, SceneDocument, SceneFile,
                                            TelescopingLegs, TripodLegs, build_scene, lander_scene, read_scene)
 from alightsize.model.soils import find_soil
-from alightsize.pipeline.cores import core_prism, crush_stroke
+from alightsize.pipeline.cores import CoreWeight, core_weight, crush_stroke
 from alightsize.pipeline.config import DesignSpec, UnitSystem, read_design, read_items
 from alightsize.pipeline.landings import LandingSpec
 from alightsize.checks.rules import DEFAULT_RULES, RuleSet
@@ -378,16 +378,12 @@ def _outrigger(path: Path, name: str, structure: dict, scene: SceneFile, loads: 
                                  own.radius, s.body_radius, envelope)
 
 
-class CrushableWeight(Table):
+class CrushableWeight(CoreWeight):
     """`[[item]] weight = {method = "crushable", cell = NAME}`: the item weighed as the crushable core of the cell
-    `[cells.NAME]` (the prism `core_prism` gives); its other keys are the prism's."""
+    `[cells.NAME]` (the prism `core_weight` gives)."""
 
     method: Literal["crushable"]
     cell: str
-    allowance: Annotated[float, Number("any")] = 0.0
-    extra: Annotated[float, Quantity("mass")] = 0.0
-    label: str = ""
-    note: str = ""
 
     @model_validator(mode="after")
     def _cell(self, info: ValidationInfo):
@@ -409,7 +405,7 @@ def _crushable(node: Node, scene: SceneFile, mats: dict) -> Node:
         raise node.error("material", "a crushable material (with crush_strength and stroke_fraction)",
                          repr(node.data.get("material")))
     cell = scene.cells[core.cell]
-    prism = core_prism(w, cell.deflection, cell.force, mat, core.cell)
+    prism = core_weight(core, cell.deflection, cell.force, mat, f"{node.path}.weight")
     return Node(node.file, node.path, {**node.data, "weight": prism})
 
 

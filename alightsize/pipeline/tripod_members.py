@@ -41,7 +41,7 @@ from alightsize.common.typed import validate
 from alightsize.loads.envelopes import Extreme
 from alightsize.loads.quasi_static import LoadReference
 from alightsize.model.materials import Material
-from alightsize.pipeline.cores import core_prism
+from alightsize.pipeline.cores import CoreWeight, core_weight
 from alightsize.pipeline.landings import LANDING
 from alightsize.pipeline.members import Member, _pin, _plate
 from alightsize_sim.tripod_leg import TripodLeg, strut_forces
@@ -54,7 +54,6 @@ CORE_KEYS = ("material", "weight", "note")            # a core is weighed, not c
 FOOTPAD = "footpad"                                   # the member (and item) the landings' footpad_mass must match
 TRIPOD_ENVELOPE = "landings"                          # the envelope of every landing, a tripod's member loads
 ROUNDOFF = 1e-9                                       # relative: a strut force below it is round-off (landing_extremes)
-CORE_WEIGHT_KEYS = ("allowance", "extra", "label", "note")
 # a sandwich footpad's checks (alightsize.checks.sandwich)
 SANDWICH_CHECKS = ("sandwich_face_stress", "sandwich_face_buckling", "sandwich_core_shear", "sandwich_core_crushing")
 
@@ -209,10 +208,7 @@ def _cores(node: Node, name: str, leg: TripodLeg, materials: dict[str, Material]
     if mat is None or mat.crush_strength is None or mat.stroke_fraction is None:
         raise node.error("material", "a crushable material (with crush_strength and stroke_fraction)",
                          repr(node.data.get("material")))
-    weight = node.data.get("weight", {})
-    if not isinstance(weight, dict) or set(weight) - set(CORE_WEIGHT_KEYS):
-        raise node.error("weight", "a table of " + ", ".join(CORE_WEIGHT_KEYS) + " (the cells give the prism)",
-                         repr(weight))
+    weight = validate(CoreWeight, node.data.get("weight", {}), node.file, node.key("weight"))
     if name == "primary_core":
         cells = [("core_primary", leg.primary)]
     else:
@@ -220,7 +216,8 @@ def _cores(node: Node, name: str, leg: TripodLeg, materials: dict[str, Material]
                  for sense, cells in (("compression", leg.secondary_compression), ("tension", leg.secondary_tension))]
     return [{"name": n, "material": node.data["material"], **({"note": node.data["note"]} if "note" in node.data
                                                                    else {}),
-             "weight": core_prism(weight, c.curve.deflection, c.curve.force, mat, n)} for n, c in cells]
+             "weight": core_weight(weight, c.curve.deflection, c.curve.force, mat, node.key("weight"))}
+            for n, c in cells]
 
 
 def tripod_member_items(node: Node, name: str, leg: TripodLeg, loads: TripodLoads, default_rules: str,

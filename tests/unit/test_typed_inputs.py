@@ -158,3 +158,22 @@ def test_a_lander_cell_that_only_a_crushable_item_weighs_is_used(tmp_path):
     with pytest.raises(InputError) as err:
         read_lander(p)
     assert (err.value.key, err.value.found) == ("cells.spare", "a cell nothing uses")
+
+
+def test_a_tripod_core_weight_takes_only_its_own_keys(tmp_path):
+    """A tripod's crushable core is weighed from its cells: its `weight` table takes an allowance, extra mass, label
+    and note, read as typed values (the extra mass in kg); any other key, such as a method of its own, is refused
+    naming it."""
+    text = (ROOT / "examples" / "lunar_tripod.toml").read_text(encoding="utf-8")
+    anchor = '[members.primary_core]                               # the cartridges, weighed from their cells\n' \
+             'material = "al-honeycomb"\n'
+    assert anchor in text
+    p = tmp_path / "lander.toml"
+    p.write_text(text.replace(anchor, anchor + 'weight = { extra = "0.2 kg", label = "cores" }\n', 1),
+                 encoding="utf-8")
+    core = next(i for i in read_lander(p).spec.items if i.name == "core_primary")
+    assert core.weight is not None and core.weight.params["extra"] == pytest.approx(0.2, rel=1e-12)
+    p.write_text(text.replace(anchor, anchor + 'weight = { method = "prism" }\n', 1), encoding="utf-8")
+    with pytest.raises(InputError) as err:
+        read_lander(p)
+    assert err.value.key == "members.primary_core.weight.method"
