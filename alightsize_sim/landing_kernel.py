@@ -605,7 +605,16 @@ def _clear(S, y, i, R):
     gap = foot[2] - pad_ground(S.mu, y, i, n, S.geo[9], foot[0], foot[1]) - floor
     if gap >= 0.0:
         return
-    target = (foot[0], foot[1], foot[2] - gap)
+    # Raised along its own axis (shortened, its tilt kept), not straight up: a tilted leg re-aimed straight up turns
+    # a little, and its pad cells, in the air, would touch down again stroked by that turn, work never done (a pad
+    # cell deep in its bottoming branch at 2.2e6 N/m gave back 2.6 kJ it was never given, over 2,000 raises).
+    a0, a1, a2 = mv(R, S.geo[0][i, 0], S.geo[0][i, 1], S.geo[0][i, 2])
+    up = y[2] + a2 - foot[2]                      # the attachment's height above the footpad
+    if up > 0.1 * np.sqrt((y[0] + a0 - foot[0]) ** 2 + (y[1] + a1 - foot[1]) ** 2 + up ** 2):
+        s = -gap / up
+        target = (foot[0] + s * (y[0] + a0 - foot[0]), foot[1] + s * (y[1] + a1 - foot[1]), foot[2] - gap)
+    else:                                         # a leg within 6 deg of level: straight up
+        target = (foot[0], foot[1], foot[2] - gap)
     if gap < -FACE_GAP:
         found = False
         radius = FACE_GAP * 4.0 ** -7
