@@ -585,10 +585,10 @@ def _strain(S, y, i, R, W, shape, before, add):
 
 @_inner
 def _clear(S, y, i, R):
-    """A telescoping leg lifting off with its free footpad below the ground under it is re-aimed in the air at the nearest
-    point within FACE_GAP of it that is clear, so that its touchdown can be found: up, along its own axis (a footpad
-    caught in the corner of its hole in the soil and a rock's foot), else sideways out of a face (a footpad held on a
-    step's riser or a box's side, a located overshoot of micrometres into the feature; radii FACE_GAP 4^-m, 16
+    """A telescoping leg lifting off with its free footpad below the ground under it is re-aimed in the air at the
+    nearest point within FACE_GAP of it that is clear, so that its touchdown can be found: up, along its own axis (a
+    footpad caught in the corner of its hole in the soil and a rock's foot), else sideways out of a face (a footpad held
+    on a step's riser or a box's side, a located overshoot of micrometres into the feature; radii FACE_GAP 4^-m, 16
     directions). The leg lands again with at most that much more compression beyond its set: bounded by the gap the face
     test grants a footpad on the surface (a 1 mm force step stores 7 J at the report's unloading rate 1.46e7 N/m; a
     micrometre, 1e-5 J). Deeper (no clear point within FACE_GAP: a footpad inside a feature, up to its height below the
