@@ -260,7 +260,7 @@ def initial_state(scene: Scene, run: _Run) -> np.ndarray:
     y0 = np.concatenate([r0, scene.v0, scene.q0, scene.omega0, np.zeros(run.ny - 13)])
     run.armed[heights - heights.min() <= 1e-12] = lk.TOUCH
     # the energy scale of the steps' energy test (landing_kernel._error_norm): the initial kinetic energy and the
-    # weight over 0.1 m (a landing from rest still has one)
+    # weight over 0.1 m (a landing from rest still has one), and 1 nJ (at rest in zero gravity: no division by zero)
     run.run_state[lk.S_EREF] = kinetic(scene, y0) + 0.1 * scene.mass * float(np.linalg.norm(scene.gravity)) + 1e-9
     return y0
 
