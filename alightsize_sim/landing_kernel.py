@@ -586,15 +586,15 @@ def _strain(S, y, i, R, W, shape, before, add):
 @_inner
 def _clear(S, y, i, R):
     """A telescoping leg lifting off with its free footpad below the ground under it is re-aimed in the air at the
-    nearest point within FACE_GAP of it that is clear, so that its touchdown can be found: straight up (a footpad
-    caught in the corner of its hole in the soil and a rock's foot), else sideways out of a face (a footpad held on
-    a step's riser or a box's side, a located overshoot of micrometres into the feature; radii FACE_GAP 4^-m, 16
-    directions). The leg lands again with at most that much more compression beyond its set: bounded by the gap the
-    face test grants a footpad on the surface (a 1 mm force step stores 7 J at the report's unloading rate 1.46e7
-    N/m; a micrometre, 1e-5 J). Deeper (no clear point within FACE_GAP: a footpad inside a feature, up to its
-    height below the top), the leg keeps its lengths as loaded, as a tripod leg does: aiming it at the top would
-    land it there compressed by that height, the force and elastic energy of that stroke created from nothing and
-    given back by its cell."""
+    nearest point within FACE_GAP of it that is clear, so that its touchdown can be found: up along its own axis, or
+    straight up where the ground rises along its lean (a footpad caught in the corner of its hole in the soil and a
+    rock's foot), else sideways out of a face (a footpad held on a step's riser or a box's side, a located overshoot of
+    micrometres into the feature; radii FACE_GAP 4^-m, 16 directions). The leg lands again with at most that much more
+    compression beyond its set: bounded by the gap the face test grants a footpad on the surface (a 1 mm force step
+    stores 7 J at the report's unloading rate 1.46e7 N/m; a micrometre, 1e-5 J). Deeper (no clear point within FACE_GAP:
+    a footpad inside a feature, up to its height below the top), the leg keeps its lengths as loaded, as a tripod leg
+    does: aiming it at the top would land it there compressed by that height, the force and elastic energy of that
+    stroke created from nothing and given back by its cell."""
     n = len(S.contact)
     foot = free_footpad(S.geo, S.cells, i, S.mem[i], S.shape[i], y[0:3], R)
     # A LOCKED or BANDED leg touches only the band past zero: a footpad within half of it below the ground (one
@@ -606,6 +606,17 @@ def _clear(S, y, i, R):
     if gap >= 0.0:
         return
     target = (foot[0], foot[1], foot[2] - gap)
+    # Raised along its own axis (shortened, its tilt kept) where the ground under the moved point lets it clear: a
+    # tilted leg re-aimed straight up turns a little, and its pad cells, in the air, touch down again stroked by that
+    # turn, work never done (a pad cell deep in its bottoming branch gave back 2.6 kJ over 2,000 raises). Over higher
+    # ground (a rock's flank rising along the leg's lean) it is raised straight up.
+    a0, a1, a2 = mv(R, S.geo[0][i, 0], S.geo[0][i, 1], S.geo[0][i, 2])
+    up = y[2] + a2 - foot[2]                                  # the attachment's height above the footpad
+    if up > 0.1 * np.sqrt((y[0] + a0 - foot[0]) ** 2 + (y[1] + a1 - foot[1]) ** 2 + up ** 2):
+        s = -gap / up
+        x, yy = foot[0] + s * (y[0] + a0 - foot[0]), foot[1] + s * (y[1] + a1 - foot[1])
+        if foot[2] - gap >= pad_ground(S.mu, y, i, n, S.geo[9], x, yy) + floor:
+            target = (x, yy, foot[2] - gap)
     if gap < -FACE_GAP:
         found = False
         radius = FACE_GAP * 4.0 ** -7

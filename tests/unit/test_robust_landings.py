@@ -183,6 +183,22 @@ def test_a_footpad_raised_in_the_band_meets_a_rocks_side_and_lands():
 
 
 @pytest.mark.skipif(ROOT is None, reason="needs the repository's benchmarks/")
+def test_a_leg_raised_in_the_air_keeps_its_tilt():
+    """Landing 4510 of the mixed sweep with --tripods (telescoping lunar lander, massless footpads, 13.5 m/s^2), run
+    to 1 s. A leg leaving from deep in the grazing band is raised to half of it; raised straight up, the tilted leg
+    turned a little, and its pad cell touched down again stroked by that turn, work never done: deep in its
+    bottoming branch (282 kN) it gave back 2.6 kJ more than it stored over 2,000 raises. Raised along its own axis
+    over level ground, its tilt is kept. Criteria: the sweep's (no cell gives back more than it stored beyond 1e-4
+    of the energy in) and closure."""
+    k = 4510
+    r = _sweep().one(k, 1.0, former=False, tripods=True)
+    assert r["kind"].startswith("telescoping") and r["footpad_mass"] == 0.0
+    assert r["status"] != "failed" and r["finite"], f"landing {k}: {r}"
+    assert not r["given_back"], f"landing {k}: {r['cell_absorbed_min_J']} J"
+    assert r["closure_rel"] < CLOSURE
+
+
+@pytest.mark.skipif(ROOT is None, reason="needs the repository's benchmarks/")
 def test_a_cantilever_primary_stroked_to_its_knee_ends_the_landing():
     """Landing 133 of the mixed sweep with --tripods (the LM-class cantilever, 157 kJ in): a primary strokes past its
     drawn curve, on its bottoming branch, to its knee (1.16 m against the 0.95 m from the footpad to the knee),
