@@ -13,10 +13,11 @@ import re
 import pytest
 
 from alightsize.model.scene_config import read_scene
-from alightsize.reports.drop_report import DROP_NUMBERS, DROPS_DIR, Drop, document, plot_energy, render, run_drop
+from alightsize.landings.drops import DROP_NUMBERS, DROPS_DIR, Drop, document, run_drop
+from alightsize.reports.drop_report import plot_energy, render
 from alightsize_sim.landing import simulate
 from conftest import ROOT
-from alightsize.reports.drop_tables import STROKES_ENERGIES
+from alightsize.landings.drop_tables import STROKES_ENERGIES
 
 REPORT = ROOT / "reports" / "affdl-tr-66-33" / "drops"
 J_PER_FT_LB = 0.3048 * 0.45359237 * 9.80665          # ft x lbf (lb 0.45359237 kg, g0 9.80665 m/s^2), exact

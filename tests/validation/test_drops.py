@@ -9,10 +9,10 @@ import pytest
 
 from alightsize_sim import crush_cell
 
-from alightsize.reports.drop_report import FT, FT_LB, compare, run_drop
+from alightsize.landings.drops import FT, FT_LB, compare, run_drop
 from alightsize.landings.output import outcome
 from alightsize.common import units
-from alightsize.reports.drop_tables import (DROPS, LEGS, STROKES_ENERGIES, corrected_strokes_energies,
+from alightsize.landings.drop_tables import (DROPS, LEGS, STROKES_ENERGIES, corrected_strokes_energies,
                                             implied_static_force, simulation_cell_force, simulation_fit_points)
 
 LBF = units.parse("1 lbf", "force")                                     # N per lbf
