@@ -80,7 +80,7 @@ class Controls:
     atol: float = 1e-9
     fixed_step: float | None = None
     max_step: float = 2e-3
-    event_tol: float = 1e-6
+    event_tol: float = 1e-7
     tip_angle: float = np.radians(90.0)
     body_clearance: float = 0.0
     quiet_fraction: float = 0.025

@@ -388,6 +388,9 @@ def _commit_cells(S, W, i, damped):
     cd, cf, cn, ck, cc, cy = cells
     C = mem.shape[1]
     known = last[i, 2 * C] > 0.0
+    # A massless footpad sliding moves only at accepted steps; within a step its cells' rates are those with the
+    # footpad held, and a slide that ends where that rate is nil would make its turn an event at every step start.
+    held_rate = S.sliding[i] > 0 and not has_mass(S.mu)
     for j in range(1 + S.geo[5][i]):
         m = cn[i, j]
         d, f = cd[i, j, :m], cf[i, j, :m]
@@ -399,7 +402,7 @@ def _commit_cells(S, W, i, damped):
             if damped and not has_mass(S.mu):
                 energy[i, j] += max(0.5 * (damper + last[i, C + j]) * (delta - last[i, j]), 0.0)
         if delta > mem[i, j, 0]:                  # a new largest stroke: watch its turn while it rises
-            cev[i, j, 0] = delta > ARM and rt[i, j] > 0.0
+            cev[i, j, 0] = delta > ARM and rt[i, j] > 0.0 and not held_rate
         elif delta < mem[i, j, 0]:
             cev[i, j, 0] = 0
         mem[i, j, 0], mem[i, j, 1] = crush_cell.commit(d, f, cy[i, j], mem[i, j, 0], mem[i, j, 1], delta)

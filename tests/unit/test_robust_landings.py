@@ -199,6 +199,21 @@ def test_a_leg_raised_in_the_air_keeps_its_tilt():
 
 
 @pytest.mark.skipif(ROOT is None, reason="needs the repository's benchmarks/")
+def test_a_massless_footpad_sliding_to_where_its_cells_rate_is_nil_lands():
+    """Landing 1601 of the mixed sweep with --tripods (the 1966 telescoping legs, massless footpads, two features,
+    0.003 m/s^2). A massless footpad slides only at accepted steps; within a step its cells' rates are those with
+    the footpad held, and its slide ended each time where a pad cell's held rate was nil, so that cell's turn was
+    located at the start of every step: 48,939 events in 53,516 steps of 2e-10 s at the default event_tol, and
+    a collapsed step (failed) at 1e-6 s. Criteria: the sweep's (not failed, closure), and a turn is no event of
+    such a cell (events fewer than 5,000: 1,076 now)."""
+    r = _sweep().one(1601, 1.0, former=False, tripods=True)
+    assert r["kind"] == "telescoping_1966" and r["footpad_mass"] == 0.0
+    assert r["status"] != "failed" and r["finite"], f"landing 1601: {r}"
+    assert r["closure_rel"] < CLOSURE
+    assert r["events"] < 5000, r["events"]
+
+
+@pytest.mark.skipif(ROOT is None, reason="needs the repository's benchmarks/")
 def test_a_cantilever_primary_stroked_to_its_knee_ends_the_landing():
     """Landing 133 of the mixed sweep with --tripods (the LM-class cantilever, 157 kJ in): a primary strokes past its
     drawn curve, on its bottoming branch, to its knee (1.16 m against the 0.95 m from the footpad to the knee),
