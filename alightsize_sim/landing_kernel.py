@@ -69,8 +69,10 @@ BAND = 1e-4         # m: the default grazing band (ctl[C_BAND]): an unarmed leg 
                     # past zero, where it carries no force (grazing contact never chatters); see _events
 GRAZE_SPEED = 50.0  # m/s: the band must take a footpad this fast more than event_tol to cross (Controls)
 PATH_FLOOR = 100.0  # event_tol: steps this short or shorter skip the footpad path error (_error_norm)
-ENERGY_RATE = 50.0  # 1/s: a step's energy defect may be rtol x this x the landing's energy scale per second
-                    # (_error_norm): a landing of 1 s at rtol 1e-6 then closes its audit within 5e-5
+ENERGY_RATE = 1.0   # 1/s: a step's energy defect may be rtol x this x the landing's energy scale per second
+                    # (_error_norm): a landing of 1 s at rtol 1e-6 then closes its audit within 1e-6
+ENERGY_FLOOR = 10.0  # event_tol: steps this short or shorter skip the energy test (a step at an event, whose
+                     # defect need not fall with h; a leg touching and leaving at every step takes 1e-6 s steps)
 ROUND_OFF = 1e-13   # of the landing's energy scale: a step's energy defect this small passes (the cells' work from
                     # their curves' antiderivatives, kJ, carries round-off of 1e-12 J; at rtol 1e-10 and 1e-10 s
                     # steps the defect no longer falls with h)
@@ -741,16 +743,19 @@ def _error_norm(S, y, y1, err, W, weight, h):
     fully): a footpad that carries little cannot move the capsule much, however its path strays, and its push
     direction is ill-defined as its load goes to zero. Steps of PATH_FLOOR x event_tol or less skip the path
     error: there it no longer falls as h^2 (a slide that jumps, the friction cone folding near zero normal load;
-    a push direction that turns by a finite angle within a tiny slide), so shorter steps would not reduce it."""
+    a push direction that turns by a finite angle within a tiny slide), so shorter steps would not reduce it.
+    Steps longer than ENERGY_FLOOR x event_tol also keep the energy audit: their defect (_energy_defect) within
+    ENERGY_RATE x rtol x the landing's energy scale per second of step (and its round-off)."""
     ctl, reach, mt, Xt = S.ctl, S.geo[2], W.mt, W.Xt
     e = 0.0
     for c in range(len(y)):
         e += (err[c] / (ctl[C_ATOL] + ctl[C_RTOL] * max(abs(y[c]), abs(y1[c])))) ** 2
     e = np.sqrt(e / len(y))
+    if h > ENERGY_FLOOR * ctl[C_EVENTTOL]:
+        scale = S.run_state[S_EREF]
+        e = max(e, abs(_energy_defect(S, y, y1, W)) / (ENERGY_RATE * ctl[C_RTOL] * scale * h + ROUND_OFF * scale))
     if h <= PATH_FLOOR * ctl[C_EVENTTOL]:
         return e
-    scale = S.run_state[S_EREF]
-    e = max(e, abs(_energy_defect(S, y, y1, W)) / (ENERGY_RATE * ctl[C_RTOL] * scale * h + ROUND_OFF * scale))
     for i in range(mt.shape[0]):
         load = min(np.sqrt(Xt[i, 0] ** 2 + Xt[i, 1] ** 2 + Xt[i, 2] ** 2) / weight, 1.0)
         e = max(e, load * mt[i, 5] / (ctl[C_ATOL] + ctl[C_RTOL] * reach[i]))

@@ -154,19 +154,22 @@ def test_tripod_struts_unload_as_their_footpad_leaves(k):
 
 
 @pytest.mark.skipif(ROOT is None, reason="needs the repository's benchmarks/")
-@pytest.mark.parametrize("k", [4185, 6958, 9323])
+@pytest.mark.parametrize("k", [4185, 6958, 9323, 3565, 7113, 5320])
 def test_tripod_landings_that_touch_and_leave_close_their_audit(k):
-    """Inverted-tripod landings of the mixed sweep with --tripods (footpads of 2.6-14 kg on regolith), run to 1 s,
-    whose audit did not close within 1e-4: 4185 and 6958 lie on their side, a footpad touching and its compressed
-    secondary pulling it off again at every step (600 steps in 4185), each step passing the state's error test with
-    an energy error of the same sign (closure 1.3e-4 and 2.7e-3; at rtol 1e-8, 5.9e-6 and 5.6e-4); 9323 (7.7e-4)
-    lifted a footpad off in its last step, whose released strut energy the record's last row, written before the
-    switch, did not hold. Criterion: the sweep's closure bound; the steps' energy test bounds it by 5e-5 per
-    simulated second at rtol 1e-6."""
+    """Inverted-tripod landings of the mixed sweep with --tripods (footpads of 2.6-35 kg on regolith or dry sand),
+    run to 1 s. 4185 and 6958 lie on their side, a footpad touching and its compressed secondary pulling it off
+    again at every step (600 steps in 4185), each step passing the state's error test with an energy error of the
+    same sign (closure 1.3e-4 and 2.7e-3 without the steps' energy test); 9323 (7.7e-4) lifted a footpad off in its
+    last step, whose released strut energy the record's last row, written before the switch, did not hold. 3565,
+    7113 and 5320 drag a footpad at nearly zero load, touching and leaving up to 46,000 times (closure 8.2e-5,
+    5.7e-5 and 3.7e-5 when a step's energy defect could be 50 x rtol of the energy scale per second, and steps of
+    1e-5 s or less were not tested). Criterion: the steps' energy test bounds the closure by rtol x 1/s of the
+    energy scale, 1e-6 in 1 s at the default rtol, less the steps of 10 x event_tol or less (1e-6 s), which it does
+    not test: closure below 1e-6."""
     r = _sweep().one(k, 1.0, former=False, tripods=True)
-    assert r["kind"] == "tripod_lunar" and r["soil"] == "lunar regolith"
+    assert r["kind"] == "tripod_lunar" and r["footpad_mass"] > 0 and r["soil"] is not None
     assert r["status"] != "failed" and r["finite"], f"landing {k}: {r}"
-    assert r["closure_rel"] < CLOSURE
+    assert r["closure_rel"] < 1e-6
 
 
 @pytest.mark.skipif(ROOT is None, reason="needs the repository's benchmarks/")

@@ -150,16 +150,20 @@ def _maxima(res):
 def test_maxima_converge_with_tolerance_and_agree_with_fixed_steps():
     """Peak acceleration, largest primary and secondary strokes of an oblique landing over rtol 1e-7, 1e-8, 1e-9:
     each within 1e-4 of a fixed-step run (5 us steps, 35,000 of them, events located as in every run), the
-    finest rung nearer than the coarsest (they converge); the audit closes below 1e-6 on every run."""
+    finest rung nearer than the coarsest to a run at rtol 1e-11 (they converge); the audit closes below 1e-6 on
+    every run. The peak acceleration is sampled at accepted steps: the 5 us grid's sample stands 3.1e-6 from the
+    adaptive runs' limit (2.5 us steps: the same to 3e-10), more than the rungs' own errors (1.8e-6 to 6e-8), so
+    convergence is judged against the tighter adaptive run."""
     reference = _oblique(fixed_step=5e-6)
     assert reference.energy["closure_rel"] < 1e-6
     ref = _maxima(reference)
+    limit = _maxima(_oblique(rtol=1e-11, atol=1e-14))
     errors = []
     for rtol in (1e-7, 1e-8, 1e-9):
         res = _oblique(rtol=rtol, atol=1e-3 * rtol)
         assert res.energy["closure_rel"] < 1e-6
         np.testing.assert_allclose(_maxima(res), ref, rtol=1e-4)
-        errors.append(np.abs(_maxima(res) / ref - 1.0))
+        errors.append(np.abs(_maxima(res) / limit - 1.0))
     assert np.all(errors[-1] <= errors[0])
 
 
