@@ -164,8 +164,8 @@ def test_tripod_landings_that_touch_and_leave_close_their_audit(k):
     7113 and 5320 drag a footpad at nearly zero load, touching and leaving up to 46,000 times (closure 8.2e-5,
     5.7e-5 and 3.7e-5 when a step's energy defect could be 50 x rtol of the energy scale per second, and steps of
     1e-5 s or less were not tested). Criterion: the steps' energy test bounds the closure by rtol x 1/s of the
-    energy scale, 1e-6 in 1 s at the default rtol, less the steps of 10 x event_tol or less (1e-6 s), which it does
-    not test: closure below 1e-6."""
+    energy scale, 1e-6 in 1 s at the default rtol, apart from steps of 10 x event_tol or less (1e-6 s), which it
+    does not test: closure below 1e-6."""
     r = _sweep().one(k, 1.0, former=False, tripods=True)
     assert r["kind"] == "tripod_lunar" and r["footpad_mass"] > 0 and r["soil"] is not None
     assert r["status"] != "failed" and r["finite"], f"landing {k}: {r}"
