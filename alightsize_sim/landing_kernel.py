@@ -616,10 +616,10 @@ def _clear(S, y, i, R):
     # turn, work never done (a pad cell deep in its bottoming branch gave back 2.6 kJ over 2,000 raises). Over higher
     # ground (a rock's flank rising along the leg's lean) it is raised straight up.
     a0, a1, a2 = mv(R, S.geo[0][i, 0], S.geo[0][i, 1], S.geo[0][i, 2])
-    up = y[2] + a2 - foot[2]                                  # the attachment's height above the footpad
-    if up > 0.1 * np.sqrt((y[0] + a0 - foot[0]) ** 2 + (y[1] + a1 - foot[1]) ** 2 + up ** 2):
+    l0, l1, up = y[0] + a0 - foot[0], y[1] + a1 - foot[1], y[2] + a2 - foot[2]   # footpad to attachment
+    if up > 0.1 * np.sqrt(l0 ** 2 + l1 ** 2 + up ** 2):
         s = -gap / up
-        x, yy = foot[0] + s * (y[0] + a0 - foot[0]), foot[1] + s * (y[1] + a1 - foot[1])
+        x, yy = foot[0] + s * l0, foot[1] + s * l1
         if foot[2] - gap >= pad_ground(S.mu, y, i, n, S.geo[9], x, yy) + floor:
             target = (x, yy, foot[2] - gap)
     if gap < -FACE_GAP:
