@@ -35,6 +35,7 @@ NO_TABLE = {
         "test model tumbled over and stroked its absorbers further (Sec. VI.D)",
 }
 
+
 class Drop(NamedTuple):
     """One simulated drop: its number in Table 5, the scene and the landing."""
 
